@@ -1,0 +1,33 @@
+# The two commands of the README's quick start, and a few helpers around them.
+#   make demo   install what is missing, build, run the demo on the built-in mug
+#   make test   install what is missing, build, run every test; ends with "N passed, N failed"
+BUILD_DIR ?= build
+JOBS ?= 2
+export BUILD_DIR JOBS
+# Debian's catkin needs Debian's python3 (a pyenv python3 lacks catkin_pkg).
+export PATH := /usr/bin:/bin:$(PATH)
+
+.PHONY: all deps build test demo bench format clean
+
+all: build
+
+deps:
+	@scripts/install_deps.sh
+
+build: deps
+	@scripts/build.sh
+
+test: build
+	@scripts/run_tests.sh
+
+demo: build
+	@scripts/demo.sh
+
+bench: build
+	@scripts/run_benchmarks.sh
+
+format:
+	@find src include test bench -name '*.cpp' -o -name '*.h' | xargs clang-format -i
+
+clean:
+	rm -rf $(BUILD_DIR)

@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Configures (once) and builds the package with plain CMake into $BUILD_DIR (default: build).
+# The devel space is $BUILD_DIR/devel: `source $BUILD_DIR/devel/setup.bash` for rosrun/roslaunch.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build_dir=${BUILD_DIR:-build}
+jobs=${JOBS:-2}
+export PATH=/usr/bin:/bin:$PATH
+
+if [[ ! -f "$build_dir/CMakeCache.txt" ]]; then
+  # A failed configure caches bad values (e.g. a python without catkin_pkg): start clean.
+  if ! cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      -DPYTHON_EXECUTABLE=/usr/bin/python3 -DPython3_EXECUTABLE=/usr/bin/python3 \
+      -DCATKIN_ENABLE_TESTING=ON > "$build_dir.configure.log" 2>&1; then
+    cat "$build_dir.configure.log" >&2
+    rm -rf "$build_dir"
+    echo "build: configuring failed (log above)" >&2
+    exit 1
+  fi
+fi
+# `all` builds the libraries, tools and nodes; `tests` the gtest binaries (not part of `all`).
+cmake --build "$build_dir" -- -j"$jobs" all
+cmake --build "$build_dir" -- -j"$jobs" tests

@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# Installs the Debian packages this package builds, tests and runs with.
+# Idempotent: does nothing (and needs no network) when everything is already installed.
+# Usage: scripts/install_deps.sh [--gui]   (--gui adds rviz, Xvfb and ImageMagick)
+set -euo pipefail
+
+packages=(
+  # toolchain and catkin
+  build-essential cmake catkin python3-catkin-pkg python3-empy
+  # ROS 1 C++ libraries and their message definitions
+  libroscpp-dev libnodeletlib-dev pluginlib-dev libpcl-ros-dev libpcl-conversions-dev
+  libtf2-ros-dev libtf2-eigen-dev libtf2-geometry-msgs-dev libtf2-sensor-msgs-dev
+  libsensor-msgs-dev libgeometry-msgs-dev libvisualization-msgs-dev libstd-srvs-dev
+  libstd-msgs-dev libdiagnostic-updater-dev libdiagnostic-msgs-dev
+  ros-std-msgs ros-geometry-msgs ros-sensor-msgs ros-std-srvs ros-visualization-msgs
+  ros-diagnostic-msgs ros-message-generation ros-message-runtime
+  # rospy side: rostest, rostopic, rosservice and the test scripts
+  librostest-dev python3-rostest python3-rospy python3-sensor-msgs python3-geometry-msgs
+  python3-std-srvs python3-visualization-msgs python3-tf2-ros python3-numpy
+  rosbash python3-roslaunch python3-rosnode python3-rosservice python3-rostopic rosout
+  # the core's libraries
+  libpcl-dev libflann-dev libeigen3-dev liblbfgspp-dev libhdf5-dev hdf5-tools python3-h5py
+  libassimp-dev libcli11-dev libpng-dev
+  # tests, benchmarks and plots
+  libgtest-dev libbenchmark-dev python3-matplotlib
+)
+if [[ "${1:-}" == "--gui" ]]; then
+  packages+=(rviz xvfb xauth imagemagick)
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+  status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)
+  [[ "$status" == "install ok installed" ]] || missing+=("$p")
+done
+if [[ ${#missing[@]} -eq 0 ]]; then
+  echo "install_deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+echo "install_deps: installing ${#missing[@]} packages: ${missing[*]}"
+SUDO=""
+if [[ $(id -u) -ne 0 ]]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "install_deps: done"
