@@ -1,0 +1,29 @@
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace vdc {
+
+using Rgb = std::array<std::uint8_t, 3>;
+
+// An 8-bit RGB raster, row-major, origin top left.
+struct RgbImage {
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> pixels;  // width * height * 3
+
+  RgbImage() = default;
+  RgbImage(int w, int h, const Rgb& fill);
+  Rgb at(int x, int y) const;
+  void set(int x, int y, const Rgb& colour);
+};
+
+// Writes a PNG (libpng). Throws vdc::Error naming the file if it cannot be written.
+void writePng(const RgbImage& image, const std::string& path);
+// Reads an 8-bit RGB or RGBA PNG (alpha dropped); for tests and tools. Throws vdc::Error.
+RgbImage readPng(const std::string& path);
+
+}  // namespace vdc
