@@ -1,0 +1,34 @@
+#pragma once
+
+#include "view_direction_classification/core/bingham.h"
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace vdc {
+
+// Concentrations of fitted distributions are bounded by this magnitude: a scatter matrix of
+// rank < 4 (one sample, or identical ones) would otherwise ask for an infinite concentration.
+// 1e6 is a width of about 0.06 degrees, far below any sensor's resolution.
+constexpr double kMaxFittedConcentration = 1e6;
+
+// Maximum-likelihood Bingham distribution for a scatter matrix S = E[x x^T] (symmetric,
+// positive semi-definite; scaled to unit trace here). The axes are the eigenvectors of S; the
+// concentrations solve E_z[(v_i . x)^2] = s_i (the moment equations of the likelihood), found by
+// Newton's method on the concave log-likelihood sum_i z_i s_i - log F(z). Throws vdc::Error for a
+// non-finite, non-symmetric, indefinite or zero matrix.
+BinghamDistribution fitBinghamToScatter(const Eigen::Matrix4d& scatter);
+
+// The weighted scatter matrix sum_k w_k x_k x_k^T / sum_k w_k of unit quaternions (signs do not
+// matter). Empty weights mean equal weights. Throws vdc::Error for no samples, non-unit or
+// non-finite samples, negative or non-finite weights, a weight count that differs from the
+// sample count, or weights summing to zero.
+Eigen::Matrix4d weightedScatterMatrix(const std::vector<Eigen::Vector4d>& samples,
+                                      const std::vector<double>& weights = {});
+
+// fitBinghamToScatter(weightedScatterMatrix(samples, weights)).
+BinghamDistribution fitBingham(const std::vector<Eigen::Vector4d>& samples,
+                               const std::vector<double>& weights = {});
+
+}  // namespace vdc
