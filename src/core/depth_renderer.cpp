@@ -15,6 +15,8 @@ namespace {
 // Barycentric coordinates within this much outside a triangle still count as inside: shared
 // edges then never leave a crack from rounding (a doubly hit pixel gets the same depth twice).
 constexpr double kInsideTolerance = 1e-9;
+// Twice the projected area [px^2] below which a triangle is skipped.
+constexpr double kMinProjectedArea = 1e-6;
 
 // A vertex in the optical frame.
 using CameraPoint = Eigen::Vector3d;
@@ -67,7 +69,9 @@ class TriangleRasterizer {
         std::min(c_.height - 1, static_cast<int>(std::floor(std::max({v[0], v[1], v[2]}))));
     if (u_min > u_max || v_min > v_max) return;
     const double area = (u[1] - u[0]) * (v[2] - v[0]) - (u[2] - u[0]) * (v[1] - v[0]);
-    if (!(std::abs(area) > 1e-12)) return;  // seen edge-on (or NaN): covers no pixel centre
+    // Seen edge-on (or NaN): such a sliver covers no pixel centre, and its barycentric
+    // gradients would be dominated by rounding.
+    if (!(std::abs(area) > kMinProjectedArea)) return;
     // Barycentric weight of vertex k is affine in (u, v): lambda_k = base + du * u + dv * v.
     // With 1/z interpolated by the same weights the depth is exact for a pinhole.
     double base[3], du[3], dv[3];
