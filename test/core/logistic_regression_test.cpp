@@ -1,7 +1,9 @@
 #include "view_direction_classification/core/logistic_regression.h"
 
 #include <gtest/gtest.h>
+#include <omp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -134,6 +136,23 @@ TEST(MultinomialLogisticRegression, ClassWithoutSamplesGetsLowProbability) {
   const Eigen::MatrixXf P = model.predictProbabilities(X);
   ASSERT_TRUE(P.allFinite());
   EXPECT_LT(P.col(1).maxCoeff(), 0.05f);
+}
+
+TEST(MultinomialLogisticRegression, TrainingIsIdenticalForAnyThreadCount) {
+  Eigen::MatrixXf centres(3, 2);
+  centres << 0, 1, 1, 0, -1, -1;
+  Eigen::MatrixXf X;
+  Eigen::VectorXi labels;
+  makeBlobs(centres, 1500, 1.0f, 13, &X, &labels);  // 4500 rows: several loss blocks
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  MultinomialLogisticRegression single;
+  single.fit(X, labels, 3, {});
+  omp_set_num_threads(std::max(2, threads));
+  MultinomialLogisticRegression parallel;
+  parallel.fit(X, labels, 3, {});
+  omp_set_num_threads(threads);
+  EXPECT_EQ(single.weights(), parallel.weights());
 }
 
 TEST(MultinomialLogisticRegression, RefusesBadInput) {
