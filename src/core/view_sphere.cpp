@@ -1,5 +1,7 @@
 #include "view_direction_classification/core/view_sphere.h"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
 #include <map>
