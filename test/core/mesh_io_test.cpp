@@ -1,6 +1,8 @@
 #include "view_direction_classification/core/mesh_io.h"
 
 #include <gtest/gtest.h>
+#include <pcl/PolygonMesh.h>
+#include <pcl/io/ply_io.h>
 
 #include <filesystem>
 #include <fstream>
@@ -122,6 +124,23 @@ TEST_F(MeshIoTest, AsciiPlyRoundTripPreservesEveryCornerExactly) {
   std::getline(in, second);
   EXPECT_EQ(second, "format ascii 1.0");
   expectSameMesh(sphere, loadMesh(path("sphere_ascii.ply")));
+}
+
+TEST_F(MeshIoTest, WrittenPlyIsReadableByPcl) {
+  const TriangleMesh sphere = test::makeSphere(0.05f, 1);
+  for (const auto encoding : {PlyEncoding::kBinaryLittleEndian, PlyEncoding::kAscii}) {
+    saveMeshPly(sphere, path("for_pcl.ply"), encoding);
+    pcl::PolygonMesh loaded;
+    ASSERT_EQ(pcl::io::loadPLYFile(path("for_pcl.ply"), loaded), 0);
+    EXPECT_EQ(loaded.cloud.width * loaded.cloud.height, sphere.vertices.size());
+    ASSERT_EQ(loaded.polygons.size(), sphere.triangles.size());
+    for (std::size_t t = 0; t < sphere.triangles.size(); ++t) {
+      ASSERT_EQ(loaded.polygons[t].vertices.size(), 3u);
+      for (int k = 0; k < 3; ++k) {
+        EXPECT_EQ(static_cast<int>(loaded.polygons[t].vertices[k]), sphere.triangles[t][k]);
+      }
+    }
+  }
 }
 
 TEST_F(MeshIoTest, MissingFileIsRefusedNamingIt) {
