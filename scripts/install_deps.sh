@@ -20,7 +20,7 @@ packages=(
   rosbash python3-roslaunch python3-rosnode python3-rosservice python3-rostopic rosout
   # the core's libraries
   libpcl-dev libflann-dev libeigen3-dev liblbfgspp-dev libhdf5-dev hdf5-tools python3-h5py
-  libassimp-dev libcli11-dev nlohmann-json3-dev libpng-dev
+  libboost-dev libassimp-dev libcli11-dev nlohmann-json3-dev libpng-dev
   # tests, benchmarks and plots
   libgtest-dev libbenchmark-dev python3-matplotlib
 )

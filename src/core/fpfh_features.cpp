@@ -25,6 +25,10 @@ void checkParameters(const FeatureParameters& p) {
   positive(p.keypoint_voxel, "keypoint_voxel");
   positive(p.normal_radius, "normal_radius");
   positive(p.fpfh_radius, "fpfh_radius");
+  if (!(p.support_voxel >= 0.0) || !std::isfinite(p.support_voxel)) {
+    throw Error("feature parameter support_voxel must be 0 (off) or a positive length, got " +
+                std::to_string(p.support_voxel));
+  }
   if (p.min_neighbours < 1) {
     throw Error("feature parameter min_neighbours must be at least 1, got " +
                 std::to_string(p.min_neighbours));
@@ -77,15 +81,37 @@ FeatureSet computeFeatures(const Cloud& cloud, const FeatureParameters& paramete
 
   // FPFH's pair features use every support point's normal; a NaN normal (too few neighbours
   // within normal_radius) would poison the histogram, so such points leave the search surface.
+  pcl::PointCloud<pcl::PointNormal> oriented;
+  oriented.reserve(surface->size());
+  for (std::size_t i = 0; i < surface->size(); ++i) {
+    if (!finiteNormal((*normals)[i])) continue;
+    pcl::PointNormal p;
+    p.getVector3fMap() = (*surface)[i].getVector3fMap();
+    p.getNormalVector3fMap() = (*normals)[i].getNormalVector3fMap();
+    p.curvature = (*normals)[i].curvature;
+    oriented.push_back(p);
+  }
+  if (parameters.support_voxel > 0.0 && !oriented.empty()) {
+    // Voxel centroids with averaged (then renormalised) normals: the normals still come from the
+    // full-resolution cloud, only the FPFH pair statistics are computed on fewer points.
+    pcl::PointCloud<pcl::PointNormal> reduced;
+    pcl::VoxelGrid<pcl::PointNormal> reduce;
+    reduce.setInputCloud(oriented.makeShared());
+    const auto edge = static_cast<float>(parameters.support_voxel);
+    reduce.setLeafSize(edge, edge, edge);
+    reduce.filter(reduced);
+    oriented.swap(reduced);
+  }
   auto support = pcl::make_shared<Cloud>();
   auto support_normals = pcl::make_shared<pcl::PointCloud<pcl::Normal>>();
-  support->reserve(surface->size());
-  support_normals->reserve(surface->size());
-  for (std::size_t i = 0; i < surface->size(); ++i) {
-    if (finiteNormal((*normals)[i])) {
-      support->push_back((*surface)[i]);
-      support_normals->push_back((*normals)[i]);
-    }
+  support->reserve(oriented.size());
+  support_normals->reserve(oriented.size());
+  for (const auto& p : oriented) {
+    const Eigen::Vector3f n = p.getNormalVector3fMap();
+    if (!(n.norm() > 1e-6f)) continue;  // opposite normals averaged away: no usable direction
+    support->push_back(pcl::PointXYZ(p.x, p.y, p.z));
+    const Eigen::Vector3f unit = n.normalized();
+    support_normals->push_back(pcl::Normal(unit.x(), unit.y(), unit.z()));
   }
   if (support->size() < static_cast<std::size_t>(parameters.min_neighbours)) return result;
   tree->setInputCloud(support);

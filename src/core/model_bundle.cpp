@@ -157,6 +157,7 @@ void forEachParameter(Parameters& p, Visit&& visit) {
   visit("keypoint_voxel", p.keypoint_voxel);
   visit("normal_radius", p.normal_radius);
   visit("fpfh_radius", p.fpfh_radius);
+  visit("support_voxel", p.support_voxel);
   visit("min_neighbours", p.min_neighbours);
   visit("n_feat", p.n_feat);
   visit("surface_spacing", p.surface_spacing);

@@ -47,6 +47,7 @@ FeatureParameters featureParametersOf(const TrainingParameters& p) {
   f.keypoint_voxel = p.keypoint_voxel;
   f.normal_radius = p.normal_radius;
   f.fpfh_radius = p.fpfh_radius;
+  f.support_voxel = p.support_voxel;
   f.min_neighbours = p.min_neighbours;
   return f;
 }
@@ -86,9 +87,9 @@ ModelBundle trainModel(const TriangleMesh& mesh, const TrainingParameters& param
   // Training clouds and held-out clouds come from disjoint seeds, so held-out figures are
   // measured on views the classifier never saw.
   auto start = std::chrono::steady_clock::now();
-  const TrainingSet training = generateTrainingSet(renderer, sphere, parameters.clouds_per_view,
-                                                   simulation, feature_parameters,
-                                                   parameters.seed, progress);
+  const TrainingSet training =
+      generateTrainingSet(renderer, sphere, parameters.clouds_per_view, simulation,
+                          feature_parameters, parameters.seed, progress);
   const int held_out_per_view = std::max(1, parameters.clouds_per_view / 4);
   const TrainingSet held_out =
       generateTrainingSet(renderer, sphere, held_out_per_view, simulation, feature_parameters,
@@ -171,8 +172,7 @@ ModelBundle trainModel(const TriangleMesh& mesh, const TrainingParameters& param
   for (int m = 0; m < sphere.size(); ++m) {
     if (clouds_with_points(m) > 0) bundle.centroid_offsets.row(m) /= clouds_with_points(m);
   }
-  reportProgress(progress, "score informativeness", training.clouds.size(),
-                 training.clouds.size());
+  reportProgress(progress, "score informativeness", training.clouds.size(), training.clouds.size());
   out.seconds_scoring = secondsSince(start);
   return bundle;
 }

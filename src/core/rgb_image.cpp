@@ -19,13 +19,15 @@ RgbImage::RgbImage(int w, int h, const Rgb& fill) : width(w), height(h) {
 
 Rgb RgbImage::at(int x, int y) const {
   const std::size_t i = (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
-                         static_cast<std::size_t>(x)) * 3;
+                         static_cast<std::size_t>(x)) *
+                        3;
   return {pixels[i], pixels[i + 1], pixels[i + 2]};
 }
 
 void RgbImage::set(int x, int y, const Rgb& colour) {
   const std::size_t i = (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
-                         static_cast<std::size_t>(x)) * 3;
+                         static_cast<std::size_t>(x)) *
+                        3;
   pixels[i] = colour[0], pixels[i + 1] = colour[1], pixels[i + 2] = colour[2];
 }
 

@@ -46,7 +46,8 @@ void runHeatmap(const HeatmapOptions& options) {
   const ModelBundle bundle = loadModelBundle(options.model_path);
   std::error_code error;
   fs::create_directories(options.out_dir, error);
-  if (error) throw Error("cannot create output directory " + options.out_dir + ": " + error.message());
+  if (error)
+    throw Error("cannot create output directory " + options.out_dir + ": " + error.message());
 
   SplatView view;
   view.size = options.size;
@@ -66,8 +67,9 @@ void runHeatmap(const HeatmapOptions& options) {
   const Eigen::VectorXf& g = bundle.global_scores;
   const double g_median = medianOfValid(g);
   const double g_max = g.size() > 0 ? std::max(0.0, static_cast<double>(g.maxCoeff())) : 0.0;
-  const std::pair<const char*, Eigen::Vector3d> axes[] = {
-      {"x", Eigen::Vector3d::UnitX()}, {"y", Eigen::Vector3d::UnitY()}, {"z", Eigen::Vector3d::UnitZ()}};
+  const std::pair<const char*, Eigen::Vector3d> axes[] = {{"x", Eigen::Vector3d::UnitX()},
+                                                          {"y", Eigen::Vector3d::UnitY()},
+                                                          {"z", Eigen::Vector3d::UnitZ()}};
   for (const auto& [axis, direction] : axes) {
     draw(g, g_median, direction, std::string("global_median_") + axis,
          std::string("global score, seen from +") + axis, "global score (black = median)");
@@ -99,11 +101,10 @@ void runHeatmap(const HeatmapOptions& options) {
   }
 
   const Rgb invalid = heatmapColour(-1.0, 1.0);
-  const nlohmann::json manifest = {
-      {"model", options.model_path},
-      {"mean_global_score", g.size() ? g.cwiseMax(0.0f).mean() : 0.0f},
-      {"unobservable_colour", {invalid[0], invalid[1], invalid[2]}},
-      {"panels", panels}};
+  const nlohmann::json manifest = {{"model", options.model_path},
+                                   {"mean_global_score", g.size() ? g.cwiseMax(0.0f).mean() : 0.0f},
+                                   {"unobservable_colour", {invalid[0], invalid[1], invalid[2]}},
+                                   {"panels", panels}};
   const fs::path manifest_path = fs::path(options.out_dir) / "heatmaps.json";
   std::ofstream(manifest_path) << manifest.dump(2) << "\n";
   std::printf("wrote %zu panels to %s\n", panels.size(), options.out_dir.c_str());
@@ -111,12 +112,11 @@ void runHeatmap(const HeatmapOptions& options) {
   if (options.no_figure) return;
   const fs::path script = fs::path(VDC_SCRIPTS_DIR) / "plot_heatmaps.py";
   const fs::path figure = fs::path(options.out_dir) / "heatmaps.png";
-  const std::string command =
-      "/usr/bin/python3 '" + script.string() + "' '" + manifest_path.string() + "' '" +
-      figure.string() + "'";
+  const std::string command = "/usr/bin/python3 '" + script.string() + "' '" +
+                              manifest_path.string() + "' '" + figure.string() + "'";
   if (std::system(command.c_str()) != 0) {
-    throw Error("composing the figure failed (" + command +
-                "); the single panels are in " + options.out_dir);
+    throw Error("composing the figure failed (" + command + "); the single panels are in " +
+                options.out_dir);
   }
   std::printf("wrote %s\n", figure.c_str());
 }
@@ -129,9 +129,11 @@ void addHeatmapCommand(CLI::App& app) {
   heatmap->add_option("--model", options->model_path, "model bundle (HDF5)")->required();
   heatmap->add_option("--out", options->out_dir, "output directory")->required();
   heatmap->add_option("--size", options->size, "panel size [px]")
-      ->capture_default_str()->check(CLI::Range(64, 4096));
+      ->capture_default_str()
+      ->check(CLI::Range(64, 4096));
   heatmap->add_option("--views", options->views, "best and worst views to show")
-      ->capture_default_str()->check(CLI::Range(0, 20));
+      ->capture_default_str()
+      ->check(CLI::Range(0, 20));
   heatmap->add_flag("--no-figure", options->no_figure,
                     "only the single panels, no composed figure (no matplotlib needed)");
   heatmap->callback([options] { runHeatmap(*options); });

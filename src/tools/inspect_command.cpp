@@ -30,14 +30,13 @@ nlohmann::json describe(const ModelBundle& bundle, const std::string& path) {
   nlohmann::json ranking = nlohmann::json::array();
   for (int m : v.ranking) {
     const Eigen::Vector3d& d = bundle.view_directions[static_cast<std::size_t>(m)];
-    ranking.push_back({{"view", m},
-                       {"score", v.view_scores(m)},
-                       {"direction", {d.x(), d.y(), d.z()}}});
+    ranking.push_back(
+        {{"view", m}, {"score", v.view_scores(m)}, {"direction", {d.x(), d.y(), d.z()}}});
   }
   const double mean_global = meanOfValid(global);
   return {
       {"file", path},
-      {"format_version", bundle.format_version},
+      {"format_version", ModelBundle::kFormatVersion},
       {"mesh", bundle.parameters.mesh_name},
       {"views", static_cast<int>(bundle.view_directions.size())},
       {"clouds_per_view", bundle.parameters.clouds_per_view},
@@ -69,10 +68,10 @@ void printText(const nlohmann::json& j) {
               j["held_out_features"].get<std::size_t>());
   std::printf("  held-out log-loss   %.3f\n", j["held_out_log_loss"].get<double>());
   std::printf("  mean view score     %.3f\n", j["mean_view_score"].get<double>());
-  std::printf("  mean global score   %.3f (mean weight on the correct view %.1f %%; the paper's "
-              "mug: 2.15, 11.6 %%)\n",
-              j["mean_global_score"].get<double>(),
-              100.0 * j["mean_correct_view_weight"].get<double>());
+  std::printf(
+      "  mean global score   %.3f (mean weight on the correct view %.1f %%; the paper's "
+      "mug: 2.15, 11.6 %%)\n",
+      j["mean_global_score"].get<double>(), 100.0 * j["mean_correct_view_weight"].get<double>());
   std::printf("  view ranking (most informative first):\n");
   std::printf("    %4s %5s %8s  %s\n", "rank", "view", "score", "direction (object frame)");
   int rank = 1;

@@ -52,15 +52,16 @@ void runTrain(TrainOptions options, const CLI::App& command) {
                parameters.seed, parameters.noise ? "on" : "off");
   ProgressBar progress;
   TrainingReport report;
-  const ModelBundle bundle = trainModel(
-      mesh, parameters, &report,
-      [&progress](const std::string& stage, std::size_t done, std::size_t total) {
-        progress(stage, done, total);
-      });
+  const ModelBundle bundle =
+      trainModel(mesh, parameters, &report,
+                 [&progress](const std::string& stage, std::size_t done, std::size_t total) {
+                   progress(stage, done, total);
+                 });
   for (const auto& warning : report.warnings) std::cerr << "warning: " << warning << "\n";
   saveModelBundle(bundle, options.out_path);
 
-  const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double total =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const auto& v = bundle.view_informativeness;
   double view_sum = 0.0;
   int view_count = 0;
@@ -80,34 +81,41 @@ void runTrain(TrainOptions options, const CLI::App& command) {
   std::printf("mean view score %.3f; mean global score %.3f over %d observable surface points\n",
               view_count ? view_sum / view_count : -1.0,
               global_count ? global_sum / global_count : -1.0, global_count);
-  std::printf("time: %.1f s (render+features %.1f s, classifier %.1f s, scoring %.1f s); "
-              "peak memory %.0f MiB\n",
-              total, report.seconds_rendering, report.seconds_training, report.seconds_scoring,
-              peakMemoryMiB());
+  std::printf(
+      "time: %.1f s (render+features %.1f s, classifier %.1f s, scoring %.1f s); "
+      "peak memory %.0f MiB\n",
+      total, report.seconds_rendering, report.seconds_training, report.seconds_scoring,
+      peakMemoryMiB());
 }
 
 }  // namespace
 
 void addTrainCommand(CLI::App& app) {
   auto options = std::make_shared<TrainOptions>();
-  auto* train = app.add_subcommand("train", "render views, train the classifier, score "
-                                            "informativeness, write a model bundle");
+  auto* train = app.add_subcommand("train",
+                                   "render views, train the classifier, score "
+                                   "informativeness, write a model bundle");
   TrainingParameters& p = options->parameters;
   train->add_option("--mesh", options->mesh_path, "object mesh (PLY/STL/OBJ/OFF, metres)")
       ->required();
   train->add_option("--out", options->out_path, "model bundle to write (HDF5)")->required();
   train->add_option("--views", p.views, "number of viewing directions")
-      ->capture_default_str()->check(CLI::Range(2, 5000));
+      ->capture_default_str()
+      ->check(CLI::Range(2, 5000));
   train->add_option("--clouds-per-view", p.clouds_per_view, "training clouds per direction")
-      ->capture_default_str()->check(CLI::Range(1, 1000));
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000));
   train->add_option("--seed", p.seed, "seed of every random choice")->capture_default_str();
   train->add_flag("--quick", options->quick, "a small model in seconds (tests, CI)");
   train->add_option("--clusters", p.clusters, "K-means clusters, one classifier each")
-      ->capture_default_str()->check(CLI::Range(1, 64));
+      ->capture_default_str()
+      ->check(CLI::Range(1, 64));
   train->add_option("--n-feat", p.n_feat, "most certain features summed per view")
-      ->capture_default_str()->check(CLI::Range(1, 100000));
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100000));
   train->add_option("--l2", p.l2, "L2 regularisation of the classifier")
-      ->capture_default_str()->check(CLI::Range(0.0, 100.0));
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 100.0));
   train->add_flag("--no-noise", options->no_noise, "render training clouds without noise");
   train->callback([options, train] { runTrain(*options, *train); });
 }

@@ -3,19 +3,31 @@
 // stderr and exit code 1, usage errors exit code 2.
 #include <CLI/CLI.hpp>
 
+#include <exception>
 #include <iostream>
 
+#include "commands.h"
 #include "view_direction_classification/core/error.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"vdc: viewing-direction classification for object orientation (offline tool)"};
   app.require_subcommand(1);
+  vdc::tools::addMeshCommand(app);
+  vdc::tools::addViewsCommand(app);
+  vdc::tools::addTrainCommand(app);
+  vdc::tools::addInspectCommand(app);
+  vdc::tools::addHeatmapCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
-    return app.exit(error) == 0 ? 0 : 2;
+    // --help is a "parse error" with exit code 0; every real usage error exits with 2.
+    const int code = app.exit(error);
+    return code == 0 ? 0 : 2;
   } catch (const vdc::Error& error) {
     std::cerr << "vdc: " << error.what() << "\n";
+    return 1;
+  } catch (const std::exception& error) {
+    std::cerr << "vdc: unexpected failure: " << error.what() << "\n";
     return 1;
   }
   return 0;

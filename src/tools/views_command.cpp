@@ -57,9 +57,8 @@ void runViews(const ViewsOptions& options) {
   std::printf("object: %s, %zu triangles, %.1f cm^2\n", name.c_str(), mesh.triangles.size(),
               mesh.area() * 1e4);
   std::printf("camera: %dx%d, fx %.0f, distance %.2f m, noise %s; %d views\n",
-              renderer.intrinsics().width, renderer.intrinsics().height,
-              renderer.intrinsics().fx, options.distance, noise.enabled ? "on" : "off",
-              sphere.size());
+              renderer.intrinsics().width, renderer.intrinsics().height, renderer.intrinsics().fx,
+              options.distance, noise.enabled ? "on" : "off", sphere.size());
   std::printf("%5s  %-22s %8s %9s\n", "view", "direction (object)", "points", "features");
 
   std::vector<std::size_t> points, features;

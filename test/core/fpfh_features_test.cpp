@@ -112,8 +112,11 @@ TEST(FpfhFeatures, AreDeterministic) {
 TEST(FpfhFeatures, DescriptorsAreInvariantToRotatingTheCloudAndViewpoint) {
   // Keypoints must coincide in both frames, so use a voxel smaller than the 3 mm point spacing
   // (every point is its own keypoint) and compare descriptors point by point.
+  // The axis-aligned support voxel grid is not rotation invariant by construction: use the full
+  // cloud as support here (SubsampledSupportKeepsDescriptorsClose covers the default).
   FeatureParameters parameters;
   parameters.keypoint_voxel = 0.001;
+  parameters.support_voxel = 0.0;
   const Cloud cloud = wavySurface();
   const Eigen::Vector3f viewpoint(0.f, 0.f, 0.f);
   const Eigen::Matrix3f rotation =
@@ -156,6 +159,42 @@ TEST(FpfhFeatures, DescriptorsAreInvariantToRotatingTheCloudAndViewpoint) {
   EXPECT_GT(median(unrelated), 20.0f);
 }
 
+TEST(FpfhFeatures, SubsampledSupportKeepsDescriptorsClose) {
+  // Dense enough (1.5 mm) that the 3 mm support grid really reduces the surface.
+  const Cloud cloud = wavySurface(0.0015);
+  FeatureParameters full;
+  full.support_voxel = 0.0;
+  FeatureParameters reduced;  // the default support voxel
+  ASSERT_GT(reduced.support_voxel, 0.0);
+  const FeatureSet exact = computeFeatures(cloud, full);
+  const FeatureSet approximate = computeFeatures(cloud, reduced);
+  ASSERT_GT(exact.size(), 300u);
+  ASSERT_GT(approximate.size(), exact.size() * 9 / 10);
+
+  // Keypoints are voxel centroids of slightly different point sets: match by position.
+  std::vector<float> differences, unrelated;
+  for (std::size_t i = 0; i < approximate.size(); ++i) {
+    std::size_t match = 0;
+    float best = std::numeric_limits<float>::max();
+    for (std::size_t j = 0; j < exact.size(); ++j) {
+      const float d = (exact.keypoints[j] - approximate.keypoints[i]).squaredNorm();
+      if (d < best) best = d, match = j;
+    }
+    if (std::sqrt(best) > 0.002f) continue;
+    differences.push_back(
+        (approximate.descriptors.row(i) - exact.descriptors.row(match)).cwiseAbs().sum());
+    const std::size_t other = (match + exact.size() / 2) % exact.size();
+    unrelated.push_back(
+        (approximate.descriptors.row(i) - exact.descriptors.row(other)).cwiseAbs().sum());
+  }
+  ASSERT_GT(differences.size(), approximate.size() / 2);
+  auto median = [](std::vector<float> v) {
+    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+    return v[v.size() / 2];
+  };
+  EXPECT_LT(median(differences), 0.25f * median(unrelated));
+}
+
 TEST(FpfhFeatures, RejectsNonPositiveRadii) {
   FeatureParameters parameters;
   parameters.fpfh_radius = 0.0;
@@ -165,6 +204,9 @@ TEST(FpfhFeatures, RejectsNonPositiveRadii) {
   EXPECT_THROW(computeFeatures(wavySurface(), parameters), Error);
   parameters = FeatureParameters{};
   parameters.keypoint_voxel = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(computeFeatures(wavySurface(), parameters), Error);
+  parameters = FeatureParameters{};
+  parameters.support_voxel = -0.001;
   EXPECT_THROW(computeFeatures(wavySurface(), parameters), Error);
 }
 

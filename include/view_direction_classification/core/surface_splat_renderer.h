@@ -13,8 +13,8 @@ namespace vdc {
 // skipped, fitted into the image with a margin. This is what the heatmap pictures are made of.
 struct SplatView {
   Eigen::Vector3d direction = Eigen::Vector3d::UnitX();  // object frame, object -> viewer
-  int size = 400;                                       // square image edge [px]
-  double point_spacing = 0.002;                         // spacing of S [m] (sets disc size)
+  int size = 400;                                        // square image edge [px]
+  double point_spacing = 0.002;                          // spacing of S [m] (sets disc size)
   Rgb background{235, 235, 235};
 };
 

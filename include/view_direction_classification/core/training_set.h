@@ -16,28 +16,28 @@ namespace vdc {
 
 // How training (and evaluation) clouds are simulated (METHOD.md section 2).
 struct ViewSimulation {
-  double distance = 0.6;          // camera to object origin [m]
-  double distance_jitter = 0.1;   // relative: distance drawn uniformly in d (1 +/- jitter)
-  bool noise = true;              // Kinect axial noise
+  double distance = 0.6;         // camera to object origin [m]
+  double distance_jitter = 0.1;  // relative: distance drawn uniformly in d (1 +/- jitter)
+  bool noise = true;             // Kinect axial noise
 };
 
 // One rendered training cloud, reduced to what training and scoring need.
 struct TrainingCloud {
-  int view = -1;                                      // grid direction whose cell it was drawn in
+  int view = -1;  // grid direction whose cell it was drawn in
   Eigen::Isometry3d camera_from_object = Eigen::Isometry3d::Identity();
-  Eigen::MatrixXf descriptors;                        // features x kFpfhBins
-  std::vector<Eigen::Vector3f> object_keypoints;      // keypoints moved into the object frame
+  Eigen::MatrixXf descriptors;                    // features x kFpfhBins
+  std::vector<Eigen::Vector3f> object_keypoints;  // keypoints moved into the object frame
   Eigen::Vector3d visible_centroid = Eigen::Vector3d::Zero();  // object frame, of all points
-  std::size_t points = 0;                             // valid depth points rendered
+  std::size_t points = 0;                                      // valid depth points rendered
 };
 
 // All clouds of a training (or held-out) set, with the features flattened for the classifier.
 struct TrainingSet {
   int num_views = 0;
   std::vector<TrainingCloud> clouds;
-  Eigen::MatrixXf descriptors;      // all features, cloud by cloud
-  Eigen::VectorXi labels;           // view of each feature
-  Eigen::VectorXi cloud_of_feature; // index into clouds of each feature
+  Eigen::MatrixXf descriptors;                    // all features, cloud by cloud
+  Eigen::VectorXi labels;                         // view of each feature
+  Eigen::VectorXi cloud_of_feature;               // index into clouds of each feature
   std::vector<Eigen::Vector3f> object_keypoints;  // per feature, object frame
 
   std::size_t featureCount() const { return static_cast<std::size_t>(labels.size()); }
