@@ -11,6 +11,7 @@
 #include <fstream>
 #include <map>
 #include <system_error>
+#include <utility>
 
 #include "view_direction_classification/core/error.h"
 
@@ -70,6 +71,34 @@ class VertexWelder {
   std::map<std::array<std::uint32_t, 3>, int> lookup_;
 };
 
+// Adds the triangles of `node` and its children, moved into the scene's root frame. A mirroring
+// transform (negative determinant) reverses the corners so the triangles keep facing outwards.
+void addNode(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent,
+             const std::string& path, VertexWelder* welder, TriangleMesh* mesh) {
+  const aiMatrix4x4 transform = parent * node.mTransformation;
+  const bool mirrored = transform.Determinant() < 0.0f;
+  for (unsigned int n = 0; n < node.mNumMeshes; ++n) {
+    const aiMesh* part = scene.mMeshes[node.mMeshes[n]];
+    for (unsigned int f = 0; f < part->mNumFaces; ++f) {
+      const aiFace& face = part->mFaces[f];
+      if (face.mNumIndices != 3) continue;  // points and lines carry no surface
+      Eigen::Vector3i tri;
+      for (int k = 0; k < 3; ++k) {
+        const unsigned int i = face.mIndices[k];
+        if (i >= part->mNumVertices) {
+          throw Error("Mesh file '" + path + "' has a face referring to a missing vertex.");
+        }
+        tri[k] = welder->index(transform * part->mVertices[i]);
+      }
+      if (mirrored) std::swap(tri[1], tri[2]);
+      mesh->triangles.push_back(tri);
+    }
+  }
+  for (unsigned int c = 0; c < node.mNumChildren; ++c) {
+    addNode(scene, *node.mChildren[c], transform, path, welder, mesh);
+  }
+}
+
 }  // namespace
 
 TriangleMesh loadMesh(const std::string& path) {
@@ -80,11 +109,16 @@ TriangleMesh loadMesh(const std::string& path) {
   importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS, aiComponent_NORMALS | aiComponent_COLORS |
                                                           aiComponent_TEXCOORDS |
                                                           aiComponent_TANGENTS_AND_BITANGENTS);
+  // The object frame is the file's own frame: assimp would otherwise rotate Z-up Collada files
+  // into its Y-up convention.
+  importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
+  // Node transforms are applied below rather than by aiProcess_PreTransformVertices, which
+  // rejects files without faces (point clouds) with a message about "orphaned meshes" instead of
+  // letting us say what is wrong.
   const unsigned int flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                             aiProcess_PreTransformVertices | aiProcess_RemoveComponent |
-                             aiProcess_SortByPType;
+                             aiProcess_RemoveComponent | aiProcess_SortByPType;
   const aiScene* scene = importer.ReadFile(path, flags);
-  if (scene == nullptr) {
+  if (scene == nullptr || scene->mRootNode == nullptr) {
     std::string reason = importer.GetErrorString();
     if (reason.empty()) reason = "unknown format";
     throw Error("Mesh file '" + path + "' cannot be read as a mesh: " + reason + ".");
@@ -92,22 +126,7 @@ TriangleMesh loadMesh(const std::string& path) {
 
   TriangleMesh mesh;
   VertexWelder welder(&mesh);
-  for (unsigned int m = 0; m < scene->mNumMeshes; ++m) {
-    const aiMesh* part = scene->mMeshes[m];
-    for (unsigned int f = 0; f < part->mNumFaces; ++f) {
-      const aiFace& face = part->mFaces[f];
-      if (face.mNumIndices != 3) continue;  // points and lines carry no surface
-      Eigen::Vector3i tri;
-      for (int k = 0; k < 3; ++k) {
-        const unsigned int i = face.mIndices[k];
-        if (i >= part->mNumVertices) {
-          throw Error("Mesh file '" + path + "' has a face referring to a missing vertex.");
-        }
-        tri[k] = welder.index(part->mVertices[i]);
-      }
-      mesh.triangles.push_back(tri);
-    }
-  }
+  addNode(*scene, *scene->mRootNode, aiMatrix4x4(), path, &welder, &mesh);
   if (mesh.triangles.empty()) {
     throw Error("Mesh file '" + path +
                 "' contains no triangles (only points or lines, or no geometry at all).");
