@@ -10,17 +10,11 @@
 #include <random>
 #include <vector>
 
+#include "bingham_test_distributions.h"
+
 namespace vdc {
 namespace {
 
-BinghamDistribution makeDistribution(const Eigen::Vector3d& z, unsigned seed) {
-  std::mt19937_64 generator(seed);
-  std::normal_distribution<double> normal;
-  Eigen::Matrix4d m;
-  for (int i = 0; i < 16; ++i) m(i) = normal(generator);
-  const Eigen::Matrix4d basis = Eigen::HouseholderQR<Eigen::Matrix4d>(m).householderQ();
-  return BinghamDistribution(z, basis.leftCols<3>());
-}
 
 TEST(BinghamFit, ExactScatterMatrixGivesBackTheDistribution) {
   for (const Eigen::Vector3d& z :
