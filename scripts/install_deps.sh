@@ -23,6 +23,8 @@ packages=(
   libboost-dev libassimp-dev libcli11-dev nlohmann-json3-dev libpng-dev
   # tests, benchmarks and plots
   libgtest-dev libbenchmark-dev python3-matplotlib
+  # the single-view baseline of `vdc evaluate` (OpenCV surface_matching PPF detector)
+  libopencv-contrib-dev
 )
 if [[ "${1:-}" == "--gui" ]]; then
   packages+=(rviz xvfb xauth imagemagick)
