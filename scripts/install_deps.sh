@@ -24,7 +24,7 @@ packages=(
   # tests, benchmarks and plots
   libgtest-dev libbenchmark-dev python3-matplotlib
   # the single-view baseline of `vdc evaluate` (OpenCV surface_matching PPF detector)
-  libopencv-contrib-dev
+  libopencv-contrib-dev libopencv-dev
 )
 if [[ "${1:-}" == "--gui" ]]; then
   packages+=(rviz xvfb xauth imagemagick)
