@@ -64,3 +64,26 @@ TEST(GeometryConversions, RefusesNaNTransformNamingItsFrames) {
 
 }  // namespace
 }  // namespace vdc
+
+namespace vdc {
+namespace {
+
+TEST(GeometryConversions, PoseCovarianceHasPositionVarianceAndOrientationBlockOnly) {
+  Eigen::Matrix3d orientation;
+  orientation << 0.04, 0.01, 0.0, 0.01, 0.09, 0.02, 0.0, 0.02, 0.16;
+  const geometry_msgs::PoseWithCovariance msg = toPoseWithCovarianceMsg(
+      Eigen::Vector3d(1, 2, 3), Eigen::Vector4d(1, 0, 0, 0), 0.0025, orientation);
+  EXPECT_EQ(msg.pose.position.y, 2.0);
+  EXPECT_EQ(msg.pose.orientation.w, 1.0);
+  for (int i = 0; i < 6; ++i) {
+    for (int j = 0; j < 6; ++j) {
+      double expected = 0.0;
+      if (i < 3 && i == j) expected = 0.0025;
+      if (i >= 3 && j >= 3) expected = orientation(i - 3, j - 3);
+      EXPECT_EQ(msg.covariance[i * 6 + j], expected) << "row " << i << " column " << j;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace vdc
