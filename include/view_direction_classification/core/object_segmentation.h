@@ -10,8 +10,8 @@ namespace vdc {
 // How the object's points are picked out of a depth cloud before features are computed
 // (the estimator's `segmentation` parameter).
 enum class SegmentationMode {
-  kNone,               // the whole cloud is the object (e.g. already segmented upstream)
-  kRegionOfInterest,   // a ball around a known point, dominant plane removed, largest cluster kept
+  kNone,              // the whole cloud is the object (e.g. already segmented upstream)
+  kRegionOfInterest,  // a ball around a known point, dominant plane removed, largest cluster kept
 };
 
 struct SegmentationParameters {
@@ -34,7 +34,8 @@ struct SegmentationParameters {
 void checkSegmentationParameters(const SegmentationParameters& parameters);
 
 // The object's points (finite points only, unorganised, is_dense = true); empty when nothing
-// is left (an empty, all-NaN or out-of-region cloud). Never throws for cloud content.
+// is left (an empty, all-NaN or out-of-region cloud). Never throws for cloud content; throws
+// vdc::Error for invalid parameters (checkSegmentationParameters).
 pcl::PointCloud<pcl::PointXYZ> segmentObject(const pcl::PointCloud<pcl::PointXYZ>& cloud,
                                              const SegmentationParameters& parameters);
 

@@ -19,8 +19,8 @@ namespace vdc {
 // Online settings of the estimator (config/estimator.yaml). Feature settings are not here: they
 // come from the model bundle, so online features match the training ones.
 struct EstimatorParameters {
-  int n_feat = 0;        // most certain features summed per view; <= 0: the bundle's value
-  double kappa = 0.0;    // girdle concentration; <= 0: defaultViewConcentration(view spacing)
+  int n_feat = 0;            // most certain features summed per view; <= 0: the bundle's value
+  double kappa = 0.0;        // girdle concentration; <= 0: defaultViewConcentration(view spacing)
   int max_components = 200;  // K_max of the belief
   int min_features = 10;     // a view with fewer features is skipped (no update)
   double min_weight = 1e-3;  // measurement components below this p_sum are dropped
@@ -29,8 +29,7 @@ struct EstimatorParameters {
 
 // Wall-clock time of each stage of one update [ms].
 struct UpdateTiming {
-  double segmentation = 0, features = 0, classification = 0, measurement = 0, fusion = 0,
-         total = 0;
+  double segmentation = 0, features = 0, classification = 0, measurement = 0, fusion = 0, total = 0;
 };
 
 // What one view did.
@@ -39,7 +38,7 @@ struct ViewUpdate {
   std::string skip_reason;  // why it was skipped (one sentence), empty when updated
   int object_points = 0;    // points left after segmentation
   int features = 0;
-  Eigen::VectorXd p_sum;                 // M, the view's summed distribution (when updated)
+  Eigen::VectorXd p_sum;  // M, the view's summed distribution (when updated)
   Eigen::Vector3d observed_centroid_world = Eigen::Vector3d::Zero();
   UpdateTiming timing;
 };
@@ -83,6 +82,8 @@ class OrientationEstimator {
   double kappa_;
   OrientationFilter filter_;
   std::optional<Eigen::Vector3d> last_centroid_world_, last_camera_position_world_;
+  // The MAP costs a search over every component: computed once per belief, on first request.
+  mutable std::optional<Eigen::Vector4d> map_cache_;
 };
 
 }  // namespace vdc
