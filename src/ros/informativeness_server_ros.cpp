@@ -1,0 +1,357 @@
+#include "informativeness_server_ros.h"
+
+#include <geometry_msgs/PoseStamped.h>
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+#include <pcl_conversions/pcl_conversions.h>
+#include <sensor_msgs/PointCloud2.h>
+#include <tf2_eigen/tf2_eigen.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "view_direction_classification/core/error.h"
+#include "view_direction_classification/core/heatmap_colours.h"
+#include "view_direction_classification/core/quaternion.h"
+#include "view_direction_classification/ros/bingham_conversions.h"
+#include "view_direction_classification/ros/cloud_conversions.h"
+#include "view_direction_classification/ros/geometry_conversions.h"
+
+namespace vdc {
+namespace {
+
+using view_direction_classification::GetHeatmap;
+using view_direction_classification::GetNextBestView;
+
+std_msgs::ColorRGBA toColour(const std::array<std::uint8_t, 3>& rgb) {
+  std_msgs::ColorRGBA colour;
+  colour.r = rgb[0] / 255.0f;
+  colour.g = rgb[1] / 255.0f;
+  colour.b = rgb[2] / 255.0f;
+  colour.a = 1.0f;
+  return colour;
+}
+
+// The surface set coloured by `scores` on the paper's scale, black at `black_at`.
+sensor_msgs::PointCloud2 colouredSurface(const ModelBundle& model, const Eigen::VectorXf& scores,
+                                         double black_at, const std::string& frame) {
+  pcl::PointCloud<pcl::PointXYZRGB> cloud;
+  cloud.reserve(model.surface_points.size());
+  for (std::size_t i = 0; i < model.surface_points.size(); ++i) {
+    const auto rgb = heatmapColour(scores(static_cast<Eigen::Index>(i)), black_at);
+    pcl::PointXYZRGB point(rgb[0], rgb[1], rgb[2]);
+    point.x = model.surface_points[i].x();
+    point.y = model.surface_points[i].y();
+    point.z = model.surface_points[i].z();
+    cloud.push_back(point);
+  }
+  sensor_msgs::PointCloud2 msg;
+  pcl::toROSMsg(cloud, msg);
+  msg.header.frame_id = frame;
+  msg.header.stamp = ros::Time(0);  // static in the object frame: rviz uses the latest tf
+  return msg;
+}
+
+double minimumOfValid(const Eigen::VectorXf& values) {
+  double minimum = 0.0;
+  bool any = false;
+  for (Eigen::Index i = 0; i < values.size(); ++i) {
+    if (!(values(i) >= 0.0f)) continue;
+    minimum = any ? std::min(minimum, double(values(i))) : double(values(i));
+    any = true;
+  }
+  return minimum;
+}
+
+geometry_msgs::Pose toPoseMsg(const Eigen::Isometry3d& pose) { return tf2::toMsg(pose); }
+
+Eigen::Isometry3d fromPoseMsg(const geometry_msgs::Pose& msg, std::size_t index) {
+  const Eigen::Vector3d position(msg.position.x, msg.position.y, msg.position.z);
+  const Eigen::Vector4d rotation(msg.orientation.w, msg.orientation.x, msg.orientation.y,
+                                 msg.orientation.z);
+  if (!position.allFinite() || !rotation.allFinite() || std::abs(rotation.norm() - 1.0) > 1e-3) {
+    throw Error("Candidate pose " + std::to_string(index) +
+                " has a non-finite position or a non-unit orientation.");
+  }
+  Eigen::Isometry3d pose;
+  tf2::fromMsg(msg, pose);
+  return pose;
+}
+
+}  // namespace
+
+InformativenessServerRos::InformativenessServerRos(ros::NodeHandle node,
+                                                   ros::NodeHandle private_node)
+    : node_(node), private_node_(private_node), tf_listener_(tf_buffer_) {
+  std::string model_path;
+  if (!private_node_.getParam("model", model_path) || model_path.empty()) {
+    throw Error("Parameter " + private_node_.resolveName("model") +
+                " (path of the model bundle) is not set.");
+  }
+  fixed_frame_ = private_node_.param<std::string>("fixed_frame", "world");
+  object_frame_ = private_node_.param<std::string>("object_frame", "object");
+  label_best_ = private_node_.param("label_best", 3);
+  view_marker_distance_ = private_node_.param("view_marker_distance", 0.15);
+  occluder_radius_ = private_node_.param("occluder_radius", 0.005);
+  belief_samples_ = private_node_.param("belief_samples_per_component", 8);
+  tf_timeout_ = private_node_.param("tf_timeout", 0.2);
+  if (fixed_frame_.empty() || object_frame_.empty()) {
+    throw Error("Parameters fixed_frame and object_frame must not be empty.");
+  }
+  if (label_best_ < 0) throw Error("Parameter label_best must be >= 0.");
+  if (!(view_marker_distance_ > 0.0) || !(occluder_radius_ > 0.0) || !(tf_timeout_ >= 0.0) ||
+      belief_samples_ < 0) {
+    throw Error(
+        "Parameters view_marker_distance and occluder_radius must be positive, tf_timeout and "
+        "belief_samples_per_component non-negative.");
+  }
+  model_ = std::make_shared<const ModelBundle>(loadModelBundle(model_path));
+  planner_ = std::make_unique<NextBestViewPlanner>(model_);
+
+  heatmap_publisher_ = private_node_.advertise<sensor_msgs::PointCloud2>("heatmap", 1, true);
+  view_scores_publisher_ =
+      private_node_.advertise<visualization_msgs::MarkerArray>("view_scores", 1, true);
+  publishLatchedTopics();
+  heatmap_service_ =
+      private_node_.advertiseService("get_heatmap", &InformativenessServerRos::getHeatmap, this);
+  next_best_view_service_ = private_node_.advertiseService(
+      "next_best_view", &InformativenessServerRos::nextBestView, this);
+  estimate_subscriber_ =
+      node_.subscribe("estimate", 1, &InformativenessServerRos::receiveEstimate, this);
+  ROS_INFO("Informativeness server: model %s (%d views, %zu surface points), object frame %s in %s",
+           model_path.c_str(), planner_->viewCount(), model_->surface_points.size(),
+           object_frame_.c_str(), fixed_frame_.c_str());
+}
+
+void InformativenessServerRos::publishLatchedTopics() {
+  const Eigen::VectorXf& g = model_->global_scores;
+  heatmap_publisher_.publish(colouredSurface(*model_, g, medianOfValid(g), object_frame_));
+
+  // One sphere per training direction on a sphere around the object, coloured by its view score
+  // on the same scale (white = most informative), and text labels on the best ones.
+  const auto& informativeness = model_->view_informativeness;
+  const Eigen::VectorXf view_scores = informativeness.view_scores.cast<float>();
+  const double black_at = medianOfValid(view_scores);
+  visualization_msgs::MarkerArray markers;
+  visualization_msgs::Marker sphere;
+  sphere.header.frame_id = object_frame_;
+  sphere.ns = "view_scores";
+  sphere.type = visualization_msgs::Marker::SPHERE;
+  sphere.action = visualization_msgs::Marker::ADD;
+  sphere.pose.orientation.w = 1.0;
+  sphere.scale.x = sphere.scale.y = sphere.scale.z = 0.015;
+  for (int m = 0; m < planner_->viewCount(); ++m) {
+    sphere.id = m;
+    sphere.pose.position = tf2::toMsg(
+        Eigen::Vector3d(view_marker_distance_ * model_->view_directions[m].normalized()));
+    sphere.color = toColour(heatmapColour(view_scores(m), black_at));
+    markers.markers.push_back(sphere);
+  }
+  visualization_msgs::Marker label = sphere;
+  label.ns = "best_views";
+  label.type = visualization_msgs::Marker::TEXT_VIEW_FACING;
+  label.scale.x = label.scale.y = 0.0;
+  label.scale.z = 0.012;  // text height [m]
+  label.color = toColour({230, 60, 30});
+  const int labelled = std::min<int>(label_best_, informativeness.ranking.size());
+  for (int rank = 0; rank < labelled; ++rank) {
+    const int m = informativeness.ranking[rank];
+    char text[64];
+    std::snprintf(text, sizeof(text), "#%d view %d (%.2f)", rank + 1, m, view_scores(m));
+    label.id = rank;
+    label.text = text;
+    label.pose.position = tf2::toMsg(
+        Eigen::Vector3d((view_marker_distance_ + 0.02) * model_->view_directions[m].normalized()));
+    markers.markers.push_back(label);
+  }
+  view_scores_publisher_.publish(markers);
+}
+
+void InformativenessServerRos::receiveEstimate(
+    const view_direction_classification::BinghamMixture::ConstPtr& msg) {
+  try {
+    if (!msg->header.frame_id.empty() && msg->header.frame_id != fixed_frame_) {
+      throw Error("it is in frame '" + msg->header.frame_id + "', not the fixed frame '" +
+                  fixed_frame_ + "'");
+    }
+    BinghamMixture belief = fromBinghamMixtureMsg(*msg);
+    const Eigen::Vector4d map = mapEstimate(belief);
+    std::lock_guard<std::mutex> lock(belief_mutex_);
+    latest_belief_ = std::move(belief);
+    latest_map_ = map;
+  } catch (const std::exception& error) {
+    ROS_WARN_THROTTLE(5.0, "Ignoring an estimate: %s", error.what());
+  }
+}
+
+Eigen::Isometry3d InformativenessServerRos::lookupFixedFrom(const std::string& frame,
+                                                            const char* what) const {
+  if (frame.empty() || frame == fixed_frame_) return Eigen::Isometry3d::Identity();
+  try {
+    return toIsometry(
+        tf_buffer_.lookupTransform(fixed_frame_, frame, ros::Time(0), ros::Duration(tf_timeout_)));
+  } catch (const tf2::TransformException& error) {
+    throw Error(std::string("The ") + what + " are in frame '" + frame +
+                "', which tf cannot transform into the fixed frame '" + fixed_frame_ +
+                "': " + error.what());
+  }
+}
+
+bool InformativenessServerRos::getHeatmap(GetHeatmap::Request& request,
+                                          GetHeatmap::Response& response) {
+  try {
+    answerHeatmap(request, response);
+    response.success = true;
+  } catch (const std::exception& error) {
+    response = GetHeatmap::Response();
+    response.success = false;
+    response.message = error.what();
+  }
+  return true;
+}
+
+void InformativenessServerRos::answerHeatmap(const GetHeatmap::Request& request,
+                                             GetHeatmap::Response& response) const {
+  const int views = planner_->viewCount();
+  int view = -1;
+  if (request.mode == GetHeatmap::Request::MODE_VIEW_INDEX) {
+    if (request.view_index < 0 || request.view_index >= views) {
+      throw Error("Unknown view index " + std::to_string(request.view_index) +
+                  ": the model has views 0 to " + std::to_string(views - 1) + ".");
+    }
+    view = request.view_index;
+  } else if (request.mode == GetHeatmap::Request::MODE_DIRECTION) {
+    view = planner_->nearestView(
+        Eigen::Vector3d(request.direction.x, request.direction.y, request.direction.z));
+  } else if (request.mode != GetHeatmap::Request::MODE_GLOBAL) {
+    throw Error("Unknown mode " + std::to_string(int(request.mode)) +
+                ": use MODE_GLOBAL (0), MODE_VIEW_INDEX (1) or MODE_DIRECTION (2).");
+  }
+  if (!request.scaling.empty() && request.scaling != "median" && request.scaling != "max") {
+    throw Error("Unknown scaling \"" + request.scaling + "\": use \"median\" or \"max\".");
+  }
+  const Eigen::VectorXf scores =
+      view < 0 ? model_->global_scores : Eigen::VectorXf(model_->score_matrix.col(view));
+  response.view_index = view;
+  response.min = minimumOfValid(scores);
+  response.median = medianOfValid(scores);
+  response.max = maximumOfValid(scores);
+  const double black_at = request.scaling == "max" ? response.max : response.median;
+  response.cloud = colouredSurface(*model_, scores, black_at, object_frame_);
+  response.scores.assign(scores.data(), scores.data() + scores.size());
+  response.message =
+      view < 0 ? "Global scores." : "Scores of training view " + std::to_string(view) + ".";
+}
+
+bool InformativenessServerRos::nextBestView(GetNextBestView::Request& request,
+                                            GetNextBestView::Response& response) {
+  try {
+    answerNextBestView(request, response);
+    response.success = true;
+  } catch (const std::exception& error) {
+    response = GetNextBestView::Response();
+    response.success = false;
+    response.message = error.what();
+  }
+  return true;
+}
+
+void InformativenessServerRos::answerNextBestView(const GetNextBestView::Request& request,
+                                                  GetNextBestView::Response& response) {
+  const ViewUtility utility =
+      parseViewUtility(request.utility.empty() ? "informativeness" : request.utility);
+  std::vector<std::string> notes;
+
+  // The object's pose (published by the estimator, or by a simulator's ground truth).
+  Eigen::Isometry3d world_from_object = Eigen::Isometry3d::Identity();
+  try {
+    world_from_object = lookupFixedFrom(object_frame_, "object pose");
+  } catch (const Error&) {
+    notes.push_back("The object frame '" + object_frame_ + "' is not available in tf; the object " +
+                    "was assumed at the origin of '" + fixed_frame_ + "' with identity rotation.");
+  }
+
+  // Candidate camera poses in the fixed frame.
+  std::vector<Eigen::Isometry3d> candidates;
+  if (!request.candidates.poses.empty()) {
+    const Eigen::Isometry3d world_from_frame =
+        lookupFixedFrom(request.candidates.header.frame_id, "candidate poses");
+    for (std::size_t i = 0; i < request.candidates.poses.size(); ++i) {
+      candidates.push_back(world_from_frame * fromPoseMsg(request.candidates.poses[i], i));
+    }
+  } else if (request.sample_count > 0) {
+    candidates = sampleCandidatePoses(request.sample_count, request.sample_distance,
+                                      world_from_object.translation());
+  } else {
+    throw Error(
+        "There are no candidate poses and no sampling request (set candidates, or "
+        "sample_count > 1 and sample_distance > 0).");
+  }
+
+  // The belief: the request's, else the latest estimate, else uniform.
+  PlanningScene scene;
+  scene.object_position = world_from_object.translation();
+  scene.occluder_radius = occluder_radius_;
+  if (request.use_belief) {
+    if (!request.belief.header.frame_id.empty() && request.belief.header.frame_id != fixed_frame_) {
+      throw Error("The request's belief is in frame '" + request.belief.header.frame_id +
+                  "', but beliefs must be in the fixed frame '" + fixed_frame_ + "'.");
+    }
+    scene.belief = fromBinghamMixtureMsg(request.belief);
+    scene.orientation = mapEstimate(scene.belief);
+    notes.push_back("Belief from the request.");
+  } else {
+    std::lock_guard<std::mutex> lock(belief_mutex_);
+    if (latest_belief_) {
+      scene.belief = *latest_belief_;
+      scene.orientation = latest_map_;
+      notes.push_back("Belief from the latest estimate.");
+    } else {
+      // No estimate yet: a uniform belief, and the object's orientation as tf has it.
+      scene.orientation = quaternionFromRotationMatrix(world_from_object.linear());
+      notes.push_back("No belief received yet: uniform belief.");
+    }
+  }
+
+  if (request.use_occluder) {
+    const pcl::PointCloud<pcl::PointXYZ> occluder = toXyzCloud(request.occluder);
+    const Eigen::Isometry3d world_from_occluder =
+        lookupFixedFrom(request.occluder.header.frame_id, "occluder points");
+    for (const auto& p : occluder.points) {
+      const Eigen::Vector3d point(p.x, p.y, p.z);
+      if (point.allFinite()) scene.occluder_world.push_back(world_from_occluder * point);
+    }
+    if (scene.occluder_world.empty()) {
+      throw Error("The occluder cloud has no finite points (set use_occluder to false for none).");
+    }
+  }
+
+  std::vector<Eigen::Vector3d> positions;
+  positions.reserve(candidates.size());
+  for (const auto& pose : candidates) positions.push_back(pose.translation());
+  NextBestViewOptions options;
+  options.samples_per_component = belief_samples_;
+  const std::vector<RankedCandidate> ranked =
+      rankCandidates(*planner_, positions, utility, scene, options);
+
+  response.ranked.header.frame_id = fixed_frame_;
+  response.ranked.header.stamp = ros::Time::now();
+  for (const RankedCandidate& candidate : ranked) {
+    response.ranked.poses.push_back(toPoseMsg(candidates[candidate.index]));
+    response.utilities.push_back(candidate.utility);
+    response.candidate_indices.push_back(candidate.index);
+  }
+  response.best.header = response.ranked.header;
+  response.best.pose = response.ranked.poses.front();
+  response.best_index = ranked.front().index;
+  std::string message = "Ranked " + std::to_string(ranked.size()) + " candidates by " +
+                        viewUtilityName(utility) + ".";
+  for (const auto& note : notes) message += " " + note;
+  response.message = message;
+}
+
+}  // namespace vdc

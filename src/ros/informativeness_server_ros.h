@@ -1,0 +1,70 @@
+#pragma once
+
+#include <ros/ros.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
+#include <view_direction_classification/BinghamMixture.h>
+#include <view_direction_classification/GetHeatmap.h>
+#include <view_direction_classification/GetNextBestView.h>
+
+#include <Eigen/Geometry>
+
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+
+#include "view_direction_classification/core/bingham_mixture.h"
+#include "view_direction_classification/core/model_bundle.h"
+#include "view_direction_classification/core/next_best_view.h"
+
+namespace vdc {
+
+// The informativeness server node (ARCHITECTURE.md, "Nodes"): serves a model bundle's view and
+// surface informativeness. Latched `~heatmap` (the surface set coloured by the global score) and
+// `~view_scores` (the training directions coloured by their view score), services
+// `~get_heatmap` and `~next_best_view`; tracks the belief published on `estimate`. Parameters
+// are documented in config/informativeness_server.yaml. Every bad request is answered with
+// success = false and a message; the server keeps serving.
+class InformativenessServerRos {
+ public:
+  // Throws vdc::Error for a missing or invalid model bundle or invalid parameters.
+  InformativenessServerRos(ros::NodeHandle node, ros::NodeHandle private_node);
+
+ private:
+  bool getHeatmap(view_direction_classification::GetHeatmap::Request& request,
+                  view_direction_classification::GetHeatmap::Response& response);
+  bool nextBestView(view_direction_classification::GetNextBestView::Request& request,
+                    view_direction_classification::GetNextBestView::Response& response);
+  void receiveEstimate(const view_direction_classification::BinghamMixture::ConstPtr& msg);
+
+  // Throws vdc::Error for an invalid request; fills the response on success.
+  void answerHeatmap(const view_direction_classification::GetHeatmap::Request& request,
+                     view_direction_classification::GetHeatmap::Response& response) const;
+  void answerNextBestView(const view_direction_classification::GetNextBestView::Request& request,
+                          view_direction_classification::GetNextBestView::Response& response);
+  // fixed_frame <- frame (empty = fixed_frame). Throws vdc::Error naming the frame if tf has no
+  // such transform within tf_timeout.
+  Eigen::Isometry3d lookupFixedFrom(const std::string& frame, const char* what) const;
+  void publishLatchedTopics();
+
+  ros::NodeHandle node_, private_node_;
+  std::string fixed_frame_, object_frame_;
+  int label_best_ = 3;
+  double view_marker_distance_ = 0.15, occluder_radius_ = 0.005, tf_timeout_ = 0.2;
+  int belief_samples_ = 8;
+  std::shared_ptr<const ModelBundle> model_;
+  std::unique_ptr<NextBestViewPlanner> planner_;
+
+  std::mutex belief_mutex_;  // the estimate callback and the services may run concurrently
+  std::optional<BinghamMixture> latest_belief_;
+  Eigen::Vector4d latest_map_ = Eigen::Vector4d(1, 0, 0, 0);
+
+  tf2_ros::Buffer tf_buffer_;
+  tf2_ros::TransformListener tf_listener_;
+  ros::Publisher heatmap_publisher_, view_scores_publisher_;
+  ros::ServiceServer heatmap_service_, next_best_view_service_;
+  ros::Subscriber estimate_subscriber_;
+};
+
+}  // namespace vdc

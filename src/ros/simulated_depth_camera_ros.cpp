@@ -1,0 +1,182 @@
+#include "simulated_depth_camera_ros.h"
+
+#include <geometry_msgs/TransformStamped.h>
+#include <pcl_conversions/pcl_conversions.h>
+#include <sensor_msgs/PointCloud2.h>
+#include <tf2_eigen/tf2_eigen.h>
+
+#include <cmath>
+#include <string>
+#include <utility>
+
+#include "view_direction_classification/core/camera.h"
+#include "view_direction_classification/core/error.h"
+#include "view_direction_classification/core/mesh_io.h"
+#include "view_direction_classification/core/mug_mesh.h"
+#include "view_direction_classification/core/visibility_crop.h"
+
+namespace vdc {
+namespace {
+
+std::vector<double> vectorParameter(const ros::NodeHandle& node, const std::string& name,
+                                    const std::vector<double>& fallback, std::size_t size) {
+  std::vector<double> values = node.param(name, fallback);
+  if (size > 0 && values.size() != size) {
+    throw Error("Parameter " + node.resolveName(name) + " must have " + std::to_string(size) +
+                " numbers, got " + std::to_string(values.size()) + ".");
+  }
+  for (double v : values) {
+    if (!std::isfinite(v)) throw Error("Parameter " + node.resolveName(name) + " is not finite.");
+  }
+  return values;
+}
+
+// Object pose from [x, y, z, roll, pitch, yaw] (rotation R = Rz(yaw) Ry(pitch) Rx(roll), the
+// REP 103 fixed-axis convention).
+Eigen::Isometry3d poseFromXyzRpy(const std::vector<double>& v) {
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.translation() = Eigen::Vector3d(v[0], v[1], v[2]);
+  pose.linear() = (Eigen::AngleAxisd(v[5], Eigen::Vector3d::UnitZ()) *
+                   Eigen::AngleAxisd(v[4], Eigen::Vector3d::UnitY()) *
+                   Eigen::AngleAxisd(v[3], Eigen::Vector3d::UnitX()))
+                      .toRotationMatrix();
+  return pose;
+}
+
+geometry_msgs::TransformStamped toTransformMsg(const Eigen::Isometry3d& parent_from_child,
+                                               const std::string& parent, const std::string& child,
+                                               const ros::Time& stamp) {
+  geometry_msgs::TransformStamped msg = tf2::eigenToTransform(parent_from_child);
+  msg.header.stamp = stamp;
+  msg.header.frame_id = parent;
+  msg.child_frame_id = child;
+  return msg;
+}
+
+}  // namespace
+
+SimulatedDepthCameraRos::SimulatedDepthCameraRos(ros::NodeHandle node, ros::NodeHandle private_node)
+    : node_(node), private_node_(private_node) {
+  fixed_frame_ = private_node_.param<std::string>("fixed_frame", "world");
+  camera_frame_ = private_node_.param<std::string>("camera_frame", "camera_optical_frame");
+  object_frame_ = private_node_.param<std::string>("object_frame", "object_ground_truth");
+  publish_object_tf_ = private_node_.param("publish_object_tf", true);
+  if (fixed_frame_.empty() || camera_frame_.empty() || object_frame_.empty()) {
+    throw Error("Parameters fixed_frame, camera_frame and object_frame must not be empty.");
+  }
+
+  const std::string mesh = private_node_.param<std::string>("mesh", "mug");
+  renderer_ = std::make_unique<DepthRenderer>(mesh == "mug" ? makeMug() : loadMesh(mesh));
+  world_from_object_ = poseFromXyzRpy(
+      vectorParameter(private_node_, "object_pose", {0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, 6));
+
+  noise_.enabled = private_node_.param("noise", true);
+  const int seed = private_node_.param("seed", 1);
+  rng_.seed(static_cast<std::uint32_t>(seed));
+
+  visibility_radius_ = private_node_.param("visibility_radius", 0.0);
+  if (!std::isfinite(visibility_radius_)) throw Error("Parameter visibility_radius is not finite.");
+  const std::vector<double> anchors = vectorParameter(private_node_, "visibility_anchors", {}, 0);
+  if (anchors.size() % 3 != 0) {
+    throw Error("Parameter visibility_anchors must list x, y, z triples, got " +
+                std::to_string(anchors.size()) + " numbers.");
+  }
+  for (std::size_t i = 0; i < anchors.size(); i += 3) {
+    visibility_anchors_.emplace_back(anchors[i], anchors[i + 1], anchors[i + 2]);
+  }
+  if (visibility_anchors_.empty()) visibility_anchors_ = mugHandleAnchors();
+
+  const std::vector<double> direction =
+      vectorParameter(private_node_, "view_direction", {1.0, 0.0, 0.5}, 3);
+  const double distance = private_node_.param("distance", 0.6);
+  const double roll = private_node_.param("roll", 0.0);
+  world_from_camera_ =
+      world_from_object_ *
+      cameraFromObject(Eigen::Vector3d(direction[0], direction[1], direction[2]), distance, roll)
+          .inverse();
+
+  const double rate = private_node_.param("rate", 2.0);
+  if (!(rate > 0.0) || !std::isfinite(rate)) {
+    throw Error("Parameter rate must be positive and finite, got " + std::to_string(rate) + " Hz.");
+  }
+
+  cloud_publisher_ = private_node_.advertise<sensor_msgs::PointCloud2>("cloud", 1);
+  move_service_ = private_node_.advertiseService("move_to", &SimulatedDepthCameraRos::moveTo, this);
+  timer_ =
+      node_.createTimer(ros::Duration(1.0 / rate), &SimulatedDepthCameraRos::publishView, this);
+  ROS_INFO("Simulated depth camera: mesh %s, %s -> %s at %.1f Hz, noise %s, visibility crop %s",
+           mesh.c_str(), fixed_frame_.c_str(), camera_frame_.c_str(), rate,
+           noise_.enabled ? "on" : "off",
+           visibility_radius_ > 0.0 ? (std::to_string(visibility_radius_) + " m").c_str() : "off");
+}
+
+void SimulatedDepthCameraRos::publishView(const ros::TimerEvent&) {
+  Eigen::Isometry3d world_from_camera;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    world_from_camera = world_from_camera_;
+  }
+  const ros::Time stamp = ros::Time::now();
+  // The tf goes out even when nobody listens to the cloud: the estimator needs it to place the
+  // cloud, and an rviz user sees where the camera is.
+  std::vector<geometry_msgs::TransformStamped> transforms = {
+      toTransformMsg(world_from_camera, fixed_frame_, camera_frame_, stamp)};
+  if (publish_object_tf_) {
+    transforms.push_back(toTransformMsg(world_from_object_, fixed_frame_, object_frame_, stamp));
+  }
+  tf_broadcaster_.sendTransform(transforms);
+  if (cloud_publisher_.getNumSubscribers() == 0) return;  // rendering costs; skip it unheard
+
+  const Eigen::Isometry3d camera_from_object = world_from_camera.inverse() * world_from_object_;
+  pcl::PointCloud<pcl::PointXYZ> cloud = renderer_->render(camera_from_object, noise_, &rng_);
+  if (visibility_radius_ > 0.0) {
+    cloud = cropToAnchors(cloud, camera_from_object, visibility_anchors_, visibility_radius_);
+  }
+  sensor_msgs::PointCloud2 msg;
+  pcl::toROSMsg(cloud, msg);
+  msg.header.stamp = stamp;
+  msg.header.frame_id = camera_frame_;
+  cloud_publisher_.publish(msg);
+}
+
+bool SimulatedDepthCameraRos::moveTo(
+    view_direction_classification::MoveCamera::Request& request,
+    view_direction_classification::MoveCamera::Response& response) {
+  using Request = view_direction_classification::MoveCamera::Request;
+  try {
+    Eigen::Isometry3d world_from_camera = Eigen::Isometry3d::Identity();
+    if (request.mode == Request::MODE_POSE) {
+      const auto& p = request.pose.position;
+      const auto& q = request.pose.orientation;
+      const Eigen::Vector3d position(p.x, p.y, p.z);
+      const Eigen::Quaterniond rotation(q.w, q.x, q.y, q.z);
+      if (!position.allFinite()) throw Error("The camera position is not finite.");
+      if (!rotation.coeffs().allFinite() || std::abs(rotation.norm() - 1.0) > 1e-3) {
+        throw Error("The camera orientation is not a unit quaternion (norm " +
+                    std::to_string(rotation.norm()) + ").");
+      }
+      world_from_camera.translation() = position;
+      world_from_camera.linear() = rotation.normalized().toRotationMatrix();
+    } else if (request.mode == Request::MODE_DIRECTION) {
+      const Eigen::Vector3d direction(request.direction.x, request.direction.y,
+                                      request.direction.z);
+      world_from_camera = world_from_object_ *
+                          cameraFromObject(direction, request.distance, request.roll).inverse();
+    } else {
+      throw Error("Unknown mode " + std::to_string(int(request.mode)) +
+                  ": use MODE_POSE (0) or MODE_DIRECTION (1).");
+    }
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      world_from_camera_ = world_from_camera;
+    }
+    response.success = true;
+    response.message = "Camera moved.";
+  } catch (const std::exception& error) {
+    response.success = false;
+    response.message = error.what();
+  }
+  return true;
+}
+
+}  // namespace vdc

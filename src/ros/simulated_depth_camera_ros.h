@@ -1,0 +1,54 @@
+#pragma once
+
+#include <ros/ros.h>
+#include <tf2_ros/transform_broadcaster.h>
+#include <view_direction_classification/MoveCamera.h>
+
+#include <Eigen/Geometry>
+
+#include <memory>
+#include <mutex>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "view_direction_classification/core/depth_noise.h"
+#include "view_direction_classification/core/depth_renderer.h"
+
+namespace vdc {
+
+// The simulated depth camera node (ARCHITECTURE.md, "Nodes"): renders a mesh placed at a fixed
+// pose in fixed_frame with the training renderer and publishes the organised cloud `~cloud` in
+// the camera's optical frame at `rate`, with the camera's tf (fixed_frame -> camera_frame) at the
+// same stamp, and optionally the object's ground-truth tf for evaluation. `~move_to` moves it.
+// Parameters are documented in config/simulated_depth_camera.yaml.
+class SimulatedDepthCameraRos {
+ public:
+  // Throws vdc::Error (or std::exception) for invalid parameters or an unreadable mesh.
+  SimulatedDepthCameraRos(ros::NodeHandle node, ros::NodeHandle private_node);
+
+ private:
+  void publishView(const ros::TimerEvent& event);
+  bool moveTo(view_direction_classification::MoveCamera::Request& request,
+              view_direction_classification::MoveCamera::Response& response);
+
+  ros::NodeHandle node_, private_node_;
+  std::string fixed_frame_, camera_frame_, object_frame_;
+  bool publish_object_tf_ = false;
+  Eigen::Isometry3d world_from_object_ = Eigen::Isometry3d::Identity();
+  std::unique_ptr<DepthRenderer> renderer_;
+  DepthNoiseModel noise_;
+  std::mt19937 rng_;
+  double visibility_radius_ = 0.0;  // <= 0: no crop
+  std::vector<Eigen::Vector3d> visibility_anchors_;
+
+  std::mutex mutex_;  // guards world_from_camera_ (the timer and the service may run concurrently)
+  Eigen::Isometry3d world_from_camera_ = Eigen::Isometry3d::Identity();
+
+  ros::Publisher cloud_publisher_;
+  ros::ServiceServer move_service_;
+  tf2_ros::TransformBroadcaster tf_broadcaster_;
+  ros::Timer timer_;
+};
+
+}  // namespace vdc
