@@ -1,0 +1,35 @@
+#pragma once
+
+#include <ros/node_handle.h>
+
+#include <Eigen/Core>
+#include <string>
+
+#include "view_direction_classification/core/orientation_estimator.h"
+
+namespace vdc {
+
+// Everything the orientation_estimator node reads from its private parameters
+// (config/estimator.yaml documents each one; the README lists them).
+struct EstimatorRosParameters {
+  std::string model_path;               // model bundle (.h5), required
+  std::string fixed_frame = "world";    // frame of the estimate (the object must be static in it)
+  std::string object_id = "object";     // copied into every estimate
+  std::string object_frame = "object";  // tf child frame broadcast when publish_tf
+  bool publish_tf = true;
+  double tf_timeout = 0.2;            // [s] wait for the camera pose at the cloud's stamp
+  int max_points = 500000;            // larger clouds are skipped (latency guard)
+  double position_variance = 0.0025;  // [m^2] per axis in ~pose's covariance
+  int marker_samples = 20;            // axes triads sampled from the belief for ~markers
+  double marker_length = 0.1;         // [m] MAP axes arrows; samples are drawn at 0.8 of it
+  // Core settings; segmentation.roi_centre holds the region of interest in the FIXED frame (the
+  // node moves it into each cloud's frame).
+  EstimatorParameters core;
+};
+
+// Reads and validates the parameters of `private_node`. Throws vdc::Error naming the parameter
+// (e.g. "Parameter ~tf_timeout must be >= 0, got -1.") for a missing model, a wrong type, an
+// unknown segmentation mode or an out-of-range value.
+EstimatorRosParameters readEstimatorRosParameters(const ros::NodeHandle& private_node);
+
+}  // namespace vdc

@@ -1,0 +1,290 @@
+#include "orientation_estimator_ros.h"
+
+#include <geometry_msgs/PoseWithCovarianceStamped.h>
+#include <tf2/exceptions.h>
+#include <view_direction_classification/BinghamMixture.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include <chrono>
+#include <exception>
+#include <random>
+#include <sstream>
+#include <utility>
+
+#include "view_direction_classification/core/error.h"
+#include "view_direction_classification/core/model_bundle.h"
+#include "view_direction_classification/core/object_segmentation.h"
+#include "view_direction_classification/ros/belief_markers.h"
+#include "view_direction_classification/ros/bingham_conversions.h"
+#include "view_direction_classification/ros/cloud_conversions.h"
+#include "view_direction_classification/ros/geometry_conversions.h"
+
+namespace vdc {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double millisecondsSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// The seed of the belief samples drawn as markers: the same belief always looks the same.
+constexpr std::uint64_t kMarkerSeed = 1;
+
+std::shared_ptr<const ModelBundle> loadModel(const std::string& path) {
+  return std::make_shared<const ModelBundle>(loadModelBundle(path));
+}
+
+// The core segments in the cloud's frame, but the region of interest is configured in the fixed
+// frame and the camera moves: the node segments itself (with the region moved into each cloud's
+// frame) and gives the core the object's points with segmentation "none".
+EstimatorParameters coreParametersWithoutSegmentation(EstimatorParameters parameters) {
+  checkSegmentationParameters(parameters.segmentation);
+  parameters.segmentation.mode = SegmentationMode::kNone;
+  return parameters;
+}
+
+}  // namespace
+
+OrientationEstimatorRos::OrientationEstimatorRos(ros::NodeHandle node, ros::NodeHandle private_node)
+    : node_(node),
+      private_node_(private_node),
+      parameters_(readEstimatorRosParameters(private_node)),
+      estimator_(std::make_unique<OrientationEstimator>(
+          loadModel(parameters_.model_path), coreParametersWithoutSegmentation(parameters_.core))),
+      tf_listener_(tf_buffer_, node_),
+      diagnostics_(node_, private_node_, private_node_.getNamespace()) {
+  estimate_publisher_ = private_node_.advertise<BinghamMixtureMsg>("estimate", 1);
+  pose_publisher_ = private_node_.advertise<geometry_msgs::PoseWithCovarianceStamped>("pose", 1);
+  markers_publisher_ = private_node_.advertise<visualization_msgs::MarkerArray>("markers", 1);
+  reset_server_ =
+      private_node_.advertiseService("reset", &OrientationEstimatorRos::resetService, this);
+
+  diagnostics_.setHardwareID("none");
+  diagnostics_.add("orientation estimate", this, &OrientationEstimatorRos::diagnose);
+  diagnostics_timer_ = private_node_.createTimer(
+      ros::Duration(1.0), [this](const ros::TimerEvent&) { diagnostics_.update(); });
+
+  worker_ = std::thread(&OrientationEstimatorRos::workerLoop, this);
+  // Queue of one: the worker only ever wants the newest cloud.
+  cloud_subscriber_ = node_.subscribe("cloud", 1, &OrientationEstimatorRos::cloudCallback, this);
+  ROS_INFO("%s: model %s (%d viewing directions, kappa %.1f), fixed frame '%s', listening on %s",
+           private_node_.getNamespace().c_str(), parameters_.model_path.c_str(),
+           static_cast<int>(estimator_->model().view_directions.size()), estimator_->kappa(),
+           parameters_.fixed_frame.c_str(), cloud_subscriber_.getTopic().c_str());
+}
+
+OrientationEstimatorRos::~OrientationEstimatorRos() {
+  cloud_subscriber_.shutdown();
+  {
+    std::lock_guard<std::mutex> lock(pending_mutex_);
+    stopping_ = true;
+  }
+  pending_changed_.notify_all();
+  if (worker_.joinable()) worker_.join();
+}
+
+void OrientationEstimatorRos::cloudCallback(const sensor_msgs::PointCloud2ConstPtr& cloud) {
+  bool replaced = false;
+  {
+    std::lock_guard<std::mutex> lock(pending_mutex_);
+    replaced = static_cast<bool>(pending_);
+    pending_ = cloud;
+  }
+  pending_changed_.notify_one();
+  std::lock_guard<std::mutex> lock(statistics_mutex_);
+  ++received_;
+  if (replaced) ++dropped_;
+}
+
+void OrientationEstimatorRos::workerLoop() {
+  while (true) {
+    sensor_msgs::PointCloud2ConstPtr cloud;
+    {
+      std::unique_lock<std::mutex> lock(pending_mutex_);
+      pending_changed_.wait(lock, [this] { return stopping_ || pending_; });
+      if (stopping_) return;
+      cloud.swap(pending_);
+    }
+    try {
+      processCloud(*cloud);
+    } catch (const std::exception& error) {
+      // Anything the core did not foresee (e.g. memory for a gigantic cloud) costs one cloud,
+      // not the node.
+      skip(std::string("processing the cloud failed: ") + error.what());
+    }
+  }
+}
+
+void OrientationEstimatorRos::processCloud(const sensor_msgs::PointCloud2& cloud) {
+  const std::string& frame = cloud.header.frame_id;
+  {
+    std::lock_guard<std::mutex> lock(estimator_mutex_);
+    if (!last_stamp_.isZero() && cloud.header.stamp < last_stamp_) {
+      std::ostringstream why;
+      why << "time went backwards (cloud stamp " << cloud.header.stamp << " < last " << last_stamp_
+          << ", e.g. a looping bag)";
+      resetBelief(why.str());
+    }
+    last_stamp_ = cloud.header.stamp;
+  }
+  const std::size_t points = std::size_t(cloud.width) * cloud.height;
+  if (points > static_cast<std::size_t>(parameters_.max_points)) {
+    skip("the cloud in frame '" + frame + "' has " + std::to_string(points) +
+         " points, more than ~max_points = " + std::to_string(parameters_.max_points));
+    return;
+  }
+
+  Clock::time_point start = Clock::now();
+  geometry_msgs::TransformStamped world_from_camera_msg;
+  try {
+    world_from_camera_msg = tf_buffer_.lookupTransform(
+        parameters_.fixed_frame, frame, cloud.header.stamp, ros::Duration(parameters_.tf_timeout));
+  } catch (const tf2::TransformException& error) {
+    std::ostringstream reason;
+    reason << "no transform from the cloud's frame '" << frame << "' to the fixed frame '"
+           << parameters_.fixed_frame << "' at " << cloud.header.stamp << " within "
+           << parameters_.tf_timeout << " s (" << error.what() << ")";
+    skip(reason.str());
+    return;
+  }
+  const double tf_ms = millisecondsSince(start);
+
+  start = Clock::now();
+  Eigen::Isometry3d world_from_camera;
+  pcl::PointCloud<pcl::PointXYZ> xyz;
+  try {
+    world_from_camera = toIsometry(world_from_camera_msg);
+    xyz = toXyzCloud(cloud);
+  } catch (const Error& error) {
+    skip(error.what());
+    return;
+  }
+  const double conversion_ms = millisecondsSince(start);
+
+  start = Clock::now();
+  if (parameters_.core.segmentation.mode != SegmentationMode::kNone) {
+    SegmentationParameters segmentation = parameters_.core.segmentation;
+    segmentation.roi_centre = world_from_camera.inverse() * segmentation.roi_centre;
+    xyz = segmentObject(xyz, segmentation);
+  }
+  const double segmentation_ms = millisecondsSince(start);
+
+  std::lock_guard<std::mutex> lock(estimator_mutex_);
+  const ViewUpdate update = estimator_->update(xyz, world_from_camera);
+  if (!update.updated) {
+    skip("cloud in frame '" + frame + "' not fused: " + update.skip_reason);
+    return;
+  }
+  start = Clock::now();
+  publishEstimate(cloud.header);
+  const double publish_ms = millisecondsSince(start);
+
+  std::lock_guard<std::mutex> statistics_lock(statistics_mutex_);
+  ++processed_;
+  last_skip_reason_.clear();
+  last_tf_ms_ = tf_ms;
+  last_conversion_ms_ = conversion_ms;
+  last_segmentation_ms_ = segmentation_ms;
+  last_timing_ = update.timing;
+  last_publish_ms_ = publish_ms;
+}
+
+// Called with estimator_mutex_ held.
+void OrientationEstimatorRos::publishEstimate(const std_msgs::Header& cloud_header) {
+  std_msgs::Header header;
+  header.stamp = cloud_header.stamp;
+  header.frame_id = parameters_.fixed_frame;
+  const Eigen::Vector4d map = estimator_->mapOrientation();
+
+  BinghamMixtureMsg estimate = toBinghamMixtureMsg(estimator_->belief());
+  estimate.header = header;
+  estimate.object_id = parameters_.object_id;
+  estimate.map_orientation = toQuaternionMsg(map);
+  estimate.entropy = estimator_->entropy();
+  estimate_publisher_.publish(estimate);
+
+  const std::optional<Eigen::Vector3d> position = estimator_->positionEstimate();
+  if (!position) return;  // cannot happen after a fused view; nothing to place the pose at
+  geometry_msgs::PoseWithCovarianceStamped pose;
+  pose.header = header;
+  pose.pose = toPoseWithCovarianceMsg(*position, map, parameters_.position_variance,
+                                      estimator_->orientationCovariance());
+  pose_publisher_.publish(pose);
+
+  // Sampling costs time; rviz may not be listening (image_proc's habit: work only for listeners).
+  if (markers_publisher_.getNumSubscribers() > 0) {
+    std::mt19937_64 generator(kMarkerSeed);
+    const std::vector<Eigen::Vector4d> samples =
+        estimator_->belief().sample(parameters_.marker_samples, generator);
+    markers_publisher_.publish(makeBeliefMarkers(header, "orientation_estimate", *position, map,
+                                                 samples, parameters_.marker_length));
+  }
+
+  if (parameters_.publish_tf) {
+    geometry_msgs::TransformStamped transform;
+    transform.header = header;
+    transform.child_frame_id = parameters_.object_frame;
+    transform.transform.translation.x = position->x();
+    transform.transform.translation.y = position->y();
+    transform.transform.translation.z = position->z();
+    transform.transform.rotation = toQuaternionMsg(map);
+    tf_broadcaster_.sendTransform(transform);
+  }
+}
+
+void OrientationEstimatorRos::skip(const std::string& reason) {
+  {
+    std::lock_guard<std::mutex> lock(statistics_mutex_);
+    ++skipped_;
+    last_skip_reason_ = reason;
+  }
+  ROS_WARN_THROTTLE(2.0, "%s: skipped a cloud: %s", private_node_.getNamespace().c_str(),
+                    reason.c_str());
+}
+
+bool OrientationEstimatorRos::resetService(std_srvs::Trigger::Request&,
+                                           std_srvs::Trigger::Response& response) {
+  std::lock_guard<std::mutex> lock(estimator_mutex_);
+  resetBelief("~reset was called");
+  response.success = true;
+  response.message = "The orientation belief is uniform again.";
+  return true;
+}
+
+// Called with estimator_mutex_ held.
+void OrientationEstimatorRos::resetBelief(const std::string& why) {
+  estimator_->reset();
+  ROS_INFO("%s: belief reset: %s", private_node_.getNamespace().c_str(), why.c_str());
+  std_msgs::Header header;
+  header.stamp = ros::Time::now();
+  header.frame_id = parameters_.fixed_frame;
+  markers_publisher_.publish(makeClearMarkers(header));
+}
+
+void OrientationEstimatorRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
+  std::lock_guard<std::mutex> lock(statistics_mutex_);
+  if (!last_skip_reason_.empty()) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
+                   "The last cloud was skipped: " + last_skip_reason_);
+  } else if (processed_ == 0) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "Waiting for clouds.");
+  } else {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "Fusing clouds.");
+  }
+  status.add("clouds received", received_);
+  status.add("clouds fused", processed_);
+  status.add("clouds dropped (a newer one arrived first)", dropped_);
+  status.add("clouds skipped (bad input or no tf)", skipped_);
+  status.add("last skip reason", last_skip_reason_.empty() ? "none" : last_skip_reason_);
+  status.add("last tf lookup [ms]", last_tf_ms_);
+  status.add("last conversion [ms]", last_conversion_ms_);
+  status.add("last segmentation [ms]", last_segmentation_ms_);
+  status.add("last features [ms]", last_timing_.features);
+  status.add("last classification [ms]", last_timing_.classification);
+  status.add("last measurement [ms]", last_timing_.measurement);
+  status.add("last fusion [ms]", last_timing_.fusion);
+  status.add("last publishing [ms]", last_publish_ms_);
+}
+
+}  // namespace vdc

@@ -1,0 +1,84 @@
+#pragma once
+
+#include <diagnostic_updater/diagnostic_updater.h>
+#include <ros/ros.h>
+#include <sensor_msgs/PointCloud2.h>
+#include <std_srvs/Trigger.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_broadcaster.h>
+#include <tf2_ros/transform_listener.h>
+
+#include <condition_variable>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+
+#include "estimator_ros_parameters.h"
+#include "view_direction_classification/core/orientation_estimator.h"
+
+namespace vdc {
+
+// The orientation_estimator's ROS side (ARCHITECTURE.md, "Nodes"): reads the parameters, loads
+// the model, subscribes `cloud`, looks up the camera pose with tf2, calls the core
+// OrientationEstimator and publishes ~estimate, ~pose, ~markers and the object's tf; serves
+// ~reset and reports diagnostics. The same class runs in the node binary and in the nodelet.
+//
+// A camera can be faster than the estimator: the subscriber callback only keeps the newest
+// cloud, and one worker thread processes whatever is newest when it is free (the clouds it never
+// saw are counted as skipped). Bad clouds are logged (throttled) and skipped; nothing a message
+// contains ends the node.
+class OrientationEstimatorRos {
+ public:
+  // Throws vdc::Error (or another std::exception) for invalid parameters or an unreadable model:
+  // the caller reports it as a fatal start-up error.
+  OrientationEstimatorRos(ros::NodeHandle node, ros::NodeHandle private_node);
+  ~OrientationEstimatorRos();
+
+  OrientationEstimatorRos(const OrientationEstimatorRos&) = delete;
+  OrientationEstimatorRos& operator=(const OrientationEstimatorRos&) = delete;
+
+ private:
+  void cloudCallback(const sensor_msgs::PointCloud2ConstPtr& cloud);
+  void workerLoop();
+  void processCloud(const sensor_msgs::PointCloud2& cloud);
+  void publishEstimate(const std_msgs::Header& cloud_header);
+  void skip(const std::string& reason);
+  bool resetService(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
+  void resetBelief(const std::string& why);
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
+
+  ros::NodeHandle node_, private_node_;
+  EstimatorRosParameters parameters_;
+
+  // The core estimator, guarded by estimator_mutex_ (the worker updates it, ~reset resets it).
+  std::mutex estimator_mutex_;
+  std::unique_ptr<OrientationEstimator> estimator_;
+  ros::Time last_stamp_;
+
+  tf2_ros::Buffer tf_buffer_;
+  tf2_ros::TransformListener tf_listener_;
+  tf2_ros::TransformBroadcaster tf_broadcaster_;
+  ros::Publisher estimate_publisher_, pose_publisher_, markers_publisher_;
+  ros::ServiceServer reset_server_;
+  ros::Subscriber cloud_subscriber_;
+  diagnostic_updater::Updater diagnostics_;
+  ros::Timer diagnostics_timer_;
+
+  // Newest unprocessed cloud (the hand-over between callback and worker).
+  std::mutex pending_mutex_;
+  std::condition_variable pending_changed_;
+  sensor_msgs::PointCloud2ConstPtr pending_;
+  bool stopping_ = false;
+  std::thread worker_;
+
+  // Statistics for the diagnostics, guarded by statistics_mutex_.
+  std::mutex statistics_mutex_;
+  std::uint64_t received_ = 0, processed_ = 0, dropped_ = 0, skipped_ = 0;
+  std::string last_skip_reason_;
+  double last_tf_ms_ = 0, last_conversion_ms_ = 0, last_segmentation_ms_ = 0, last_publish_ms_ = 0;
+  UpdateTiming last_timing_;
+};
+
+}  // namespace vdc
