@@ -5,6 +5,7 @@
 #include "view_direction_classification/core/error.h"
 #include "view_direction_classification/core/quaternion.h"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -138,18 +139,79 @@ BinghamMixture BinghamMixture::rotated(const Eigen::Vector4d& q) const {
   return BinghamMixture(weights_, std::move(rotated));
 }
 
-BinghamMixture multiply(const BinghamMixture& a, const BinghamMixture& b) {
-  std::vector<double> log_weights;
-  std::vector<BinghamDistribution> components;
-  log_weights.reserve(a.size() * b.size());
-  components.reserve(a.size() * b.size());
+BinghamMixture multiply(const BinghamMixture& a, const BinghamMixture& b,
+                        double relative_weight_floor) {
+  if (!(relative_weight_floor >= 0.0 && relative_weight_floor < 1.0)) {
+    throw Error("The relative weight floor of a mixture product must lie in [0, 1).");
+  }
+  struct Pair {
+    std::size_t i, j;
+    double log_weight_bound;
+  };
+  std::vector<Pair> pairs;
+  pairs.reserve(a.size() * b.size());
   for (std::size_t i = 0; i < a.size(); ++i) {
     for (std::size_t j = 0; j < b.size(); ++j) {
-      if (a.weight(i) == 0.0 || b.weight(j) == 0.0) continue;
-      BinghamProduct product = multiply(a.component(i), b.component(j));
-      log_weights.push_back(std::log(a.weight(i)) + std::log(b.weight(j)) + product.log_scale);
-      components.push_back(std::move(product.distribution));
+      if (a.weight(i) > 0.0 && b.weight(j) > 0.0) pairs.push_back({i, j, 0.0});
     }
+  }
+  const auto n = static_cast<std::ptrdiff_t>(pairs.size());
+  const double log_floor = std::log(relative_weight_floor);  // -inf for 0: nothing is left out
+  const double log_uniform_normalizer = std::log(2.0 * M_PI * M_PI);
+  if (relative_weight_floor > 0.0) {
+    // log w_ij = log w_i + log w_j + lambda_max + log F(Z_ij) - log F_i - log F_j, and
+    // F(Z_ij) <= F(0) = 2 pi^2 because every concentration is <= 0.
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t k = 0; k < n; ++k) {
+      Pair& pair = pairs[static_cast<std::size_t>(k)];
+      const BinghamDistribution& p = a.component(pair.i);
+      const BinghamDistribution& q = b.component(pair.j);
+      const Eigen::Matrix4d sum = p.exponentMatrix() + q.exponentMatrix();
+      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> solver(sum, Eigen::EigenvaluesOnly);
+      pair.log_weight_bound = std::log(a.weight(pair.i)) + std::log(b.weight(pair.j)) +
+                              solver.eigenvalues()(3) + log_uniform_normalizer - p.logNormalizer() -
+                              q.logNormalizer();
+    }
+  }
+  // The exact weight of the pair with the highest bound is a lower bound on the heaviest weight:
+  // every pair whose bound falls below it times the floor can be skipped.
+  double heaviest_known = -std::numeric_limits<double>::infinity();
+  if (relative_weight_floor > 0.0 && n > 0) {
+    const auto top = std::max_element(pairs.begin(), pairs.end(), [](const Pair& x, const Pair& y) {
+      return x.log_weight_bound < y.log_weight_bound;
+    });
+    const BinghamProduct product = multiply(a.component(top->i), b.component(top->j));
+    heaviest_known = std::log(a.weight(top->i)) + std::log(b.weight(top->j)) + product.log_scale;
+  }
+  std::vector<Pair> kept;
+  kept.reserve(pairs.size());
+  for (const Pair& pair : pairs) {
+    if (relative_weight_floor == 0.0 || pair.log_weight_bound >= heaviest_known + log_floor) {
+      kept.push_back(pair);
+    }
+  }
+  std::vector<double> log_weights(kept.size());
+  std::vector<BinghamDistribution> components(kept.size());
+#pragma omp parallel for schedule(dynamic, 16)
+  for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t>(kept.size()); ++k) {
+    const Pair& pair = kept[static_cast<std::size_t>(k)];
+    BinghamProduct product = multiply(a.component(pair.i), b.component(pair.j));
+    log_weights[static_cast<std::size_t>(k)] =
+        std::log(a.weight(pair.i)) + std::log(b.weight(pair.j)) + product.log_scale;
+    components[static_cast<std::size_t>(k)] = std::move(product.distribution);
+  }
+  if (relative_weight_floor > 0.0) {
+    // Exact weights known: drop what the bound let through but the floor does not.
+    const double heaviest = *std::max_element(log_weights.begin(), log_weights.end());
+    std::vector<double> surviving_weights;
+    std::vector<BinghamDistribution> surviving;
+    for (std::size_t k = 0; k < kept.size(); ++k) {
+      if (log_weights[k] >= heaviest + log_floor) {
+        surviving_weights.push_back(log_weights[k]);
+        surviving.push_back(std::move(components[k]));
+      }
+    }
+    return BinghamMixture::fromLogWeights(surviving_weights, std::move(surviving));
   }
   return BinghamMixture::fromLogWeights(log_weights, std::move(components));
 }

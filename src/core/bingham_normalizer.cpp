@@ -21,6 +21,11 @@ constexpr double kTwoPiSquared = 2.0 * M_PI * M_PI;
 // Beyond this argument e^x overflows soon; the asymptotic series is accurate to machine precision
 // long before (its terms fall like k! / (8x)^k).
 constexpr double kAsymptoticBesselArgument = 500.0;
+// Boost promotes double arguments to long double by default; the x87 long-double Bessel and
+// expl then cost most of every normaliser (measured: 65 % of a mixture product). Double
+// precision is accurate to ~1e-16 relative, far inside the quadrature's 1e-9 target.
+using DoublePrecisionPolicy =
+    boost::math::policies::policy<boost::math::policies::promote_double<false>>;
 
 // Hankel's asymptotic series e^{-x} I_nu(x) ~ (2 pi x)^{-1/2} sum_k (-1)^k a_k(nu) / x^k with
 // a_k = prod_{j=1..k} (4 nu^2 - (2j-1)^2) / (k! 8^k).
@@ -213,14 +218,14 @@ BinghamNormalizer integrate(const Eigen::Vector3d& z, bool with_gradient) {
 double besselI0Scaled(double x) {
   x = std::abs(x);
   if (x >= kAsymptoticBesselArgument) return besselScaledAsymptotic(0, x);
-  return boost::math::cyl_bessel_i(0, x) * std::exp(-x);
+  return boost::math::cyl_bessel_i(0, x, DoublePrecisionPolicy()) * std::exp(-x);
 }
 
 double besselI1Scaled(double x) {
   const double sign = x < 0.0 ? -1.0 : 1.0;
   x = std::abs(x);
   if (x >= kAsymptoticBesselArgument) return sign * besselScaledAsymptotic(1, x);
-  return sign * boost::math::cyl_bessel_i(1, x) * std::exp(-x);
+  return sign * boost::math::cyl_bessel_i(1, x, DoublePrecisionPolicy()) * std::exp(-x);
 }
 
 double binghamNormalizer(const Eigen::Vector3d& z) { return integrate(z, false).value; }

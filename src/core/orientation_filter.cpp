@@ -14,7 +14,9 @@ OrientationFilter::OrientationFilter(OrientationFilterOptions options)
 }
 
 void OrientationFilter::update(const BinghamMixture& measurement) {
-  belief_ = reduce(multiply(belief_, measurement), options_.reduction);
+  // Products that reduce() would drop are never computed (the normalisers dominate the cost).
+  belief_ = reduce(multiply(belief_, measurement, options_.reduction.relative_weight_threshold),
+                   options_.reduction);
   ++update_count_;
 }
 

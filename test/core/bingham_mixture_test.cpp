@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -127,6 +128,52 @@ TEST(BinghamMixture, TwoGirdlesFromDifferentDirectionsFuseAtTheirIntersection) {
   const BinghamDistribution& c = fused.component(0);
   EXPECT_LT(angleDeg(c.mode(), truth), 1e-6);
   EXPECT_LE(c.concentrations()(2), -kappa + 1e-9);  // no free direction left
+}
+
+// Many random concentrated components, so most pairwise products are negligible.
+BinghamMixture randomConcentratedMixture(int count, double concentration, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> gaussian;
+  std::vector<double> weights;
+  std::vector<BinghamDistribution> components;
+  for (int k = 0; k < count; ++k) {
+    const Eigen::Vector4d q =
+        Eigen::Vector4d(gaussian(rng), gaussian(rng), gaussian(rng), gaussian(rng)).normalized();
+    components.push_back(centredOn(q, Eigen::Vector3d(-concentration, -concentration,
+                                                      -concentration * (k % 3 == 0 ? 0.01 : 1))));
+    weights.push_back(1.0 + k % 5);
+  }
+  return BinghamMixture(weights, components);
+}
+
+TEST(BinghamMixture, ProductWithAWeightFloorKeepsExactlyTheComponentsAboveIt) {
+  const BinghamMixture a = randomConcentratedMixture(30, 200.0, 1);
+  const BinghamMixture b = randomConcentratedMixture(20, 50.0, 2);
+  const double floor = 1e-6;
+  const BinghamMixture full = multiply(a, b);
+  const BinghamMixture pruned = multiply(a, b, floor);
+  const double heaviest = *std::max_element(full.weights().begin(), full.weights().end());
+  std::vector<double> expected;
+  for (double w : full.weights()) {
+    if (w >= floor * heaviest) expected.push_back(w);
+  }
+  ASSERT_EQ(pruned.size(), expected.size());
+  ASSERT_LT(pruned.size(), full.size());  // the floor really removed something here
+  double expected_total = 0.0;
+  for (double w : expected) expected_total += w;
+  for (std::size_t k = 0; k < expected.size(); ++k) {
+    EXPECT_NEAR(pruned.weight(k), expected[k] / expected_total, 1e-12);
+  }
+  // And what the filter keeps is unchanged.
+  const BinghamMixture reduced_full = reduce(full);
+  const BinghamMixture reduced_pruned = reduce(pruned);
+  ASSERT_EQ(reduced_full.size(), reduced_pruned.size());
+  for (std::size_t k = 0; k < reduced_full.size(); ++k) {
+    EXPECT_NEAR(reduced_full.weight(k), reduced_pruned.weight(k), 1e-9);
+    EXPECT_LT(angleDeg(reduced_full.component(k).mode(), reduced_pruned.component(k).mode()), 1e-6);
+  }
+  EXPECT_THROW(multiply(a, b, 1.0), Error);
+  EXPECT_THROW(multiply(a, b, -0.1), Error);
 }
 
 TEST(BinghamMixture, ReductionDropsLightMergesNearAndCapsCount) {

@@ -56,7 +56,14 @@ class BinghamMixture {
 // The normalised product a(x) b(x) / integral(a b): component (i, j) is the product B_i B_j with
 // the exact Bayesian weight w_ij ~ w_i w_j e^{lambda_max,ij} F(Z_ij) / (F_i F_j), i.e. w_i w_j
 // times the overlap integral of B_i and B_j, computed in log space.
-BinghamMixture multiply(const BinghamMixture& a, const BinghamMixture& b);
+//
+// With relative_weight_floor > 0, components lighter than that fraction of the heaviest are left
+// out (what reduce() would drop anyway): a pair's weight is bounded from above with F(Z_ij) <=
+// 2 pi^2 from one 4 x 4 eigen-decomposition, and the normaliser - the expensive part - is only
+// computed for pairs whose bound clears the floor. Pairs are computed in parallel (OpenMP); the
+// result does not depend on the thread count. Throws vdc::Error for a floor outside [0, 1).
+BinghamMixture multiply(const BinghamMixture& a, const BinghamMixture& b,
+                        double relative_weight_floor = 0.0);
 
 struct MixtureReductionOptions {
   // Components lighter than this fraction of the heaviest one are dropped.
