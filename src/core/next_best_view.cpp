@@ -156,43 +156,51 @@ std::vector<bool> OccluderCloud::hidden(const Eigen::Vector3d& camera_object,
                                    : Eigen::Vector3d(0, 0, -1);
   const Eigen::Matrix3d camera_frame = frameAround(axis).transpose();  // rows e1, e2, axis
 
-  // Occluder points at least 2 radii in front of the camera, projected to (x/z, y/z). Points
-  // closer to the camera plane than that are left out (an occluder touching the lens).
-  pcl::PointCloud<pcl::PointXYZ>::Ptr projected(new pcl::PointCloud<pcl::PointXYZ>);
-  std::vector<int> kept;
-  double min_depth = std::numeric_limits<double>::infinity();
-  double max_image_radius = 0.0;
-  for (std::size_t i = 0; i < points_.size(); ++i) {
-    const Eigen::Vector3d u = camera_frame * (points_[i] - camera_object);
-    if (u.z() <= 2.0 * radius_) continue;
-    const Eigen::Vector2d q = u.head<2>() / u.z();
-    projected->push_back(pcl::PointXYZ(static_cast<float>(q.x()), static_cast<float>(q.y()), 0.f));
-    kept.push_back(static_cast<int>(i));
-    min_depth = std::min(min_depth, u.z());
-    max_image_radius = std::max(max_image_radius, q.norm());
-  }
-  if (kept.empty()) return result;
+  // The query points' image coordinates (x/z, y/z); points behind the camera are never hidden.
   std::vector<Eigen::Vector2d> surface_image(surface_points.size());
   std::vector<bool> in_front(surface_points.size(), false);
+  double max_image_radius = 0.0, max_surface_depth = 0.0;
   for (std::size_t i = 0; i < surface_points.size(); ++i) {
     const Eigen::Vector3d u = camera_frame * (surface_points[i] - camera_object);
     if (u.z() <= 0.0) continue;
     in_front[i] = true;
     surface_image[i] = u.head<2>() / u.z();
     max_image_radius = std::max(max_image_radius, surface_image[i].norm());
+    max_surface_depth = std::max(max_surface_depth, u.z());
   }
+  // Occluder points at least 2 radii in front of the camera (points nearer the camera plane are
+  // left out: an occluder touching the lens) and not beyond every query point (those cannot
+  // touch a line of sight), projected the same way.
+  pcl::PointCloud<pcl::PointXYZ>::Ptr projected(new pcl::PointCloud<pcl::PointXYZ>);
+  std::vector<int> kept;
+  double min_depth = std::numeric_limits<double>::infinity();
+  Eigen::AlignedBox2d occluder_box;
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    const Eigen::Vector3d u = camera_frame * (points_[i] - camera_object);
+    if (u.z() <= 2.0 * radius_ || u.z() > max_surface_depth + radius_) continue;
+    const Eigen::Vector2d q = u.head<2>() / u.z();
+    projected->push_back(pcl::PointXYZ(static_cast<float>(q.x()), static_cast<float>(q.y()), 0.f));
+    kept.push_back(static_cast<int>(i));
+    min_depth = std::min(min_depth, u.z());
+    max_image_radius = std::max(max_image_radius, q.norm());
+    occluder_box.extend(q);
+  }
+  if (kept.empty()) return result;
   // An occluder point o within `radius` of a segment point p (on s's pixel ray) is joined to p by
   // a 3D segment of length <= radius whose depth stays >= min_depth - radius and whose image stays
   // within max_image_radius of the centre (perspective maps segments to segments). The
   // projection's gradient norm there is sqrt(1 + |q|^2) / z, which bounds the image distance.
   const double search_radius =
       1.01 * radius_ * std::sqrt(1.0 + max_image_radius * max_image_radius) / (min_depth - radius_);
+  occluder_box.min() -= Eigen::Vector2d::Constant(search_radius);
+  occluder_box.max() += Eigen::Vector2d::Constant(search_radius);
   pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+  tree.setSortedResults(false);
   tree.setInputCloud(projected);
   std::vector<int> neighbours;
   std::vector<float> distances_sq;
   for (std::size_t i = 0; i < surface_points.size(); ++i) {
-    if (!in_front[i]) continue;
+    if (!in_front[i] || !occluder_box.contains(surface_image[i])) continue;
     const Eigen::Vector3d& s = surface_points[i];
     const Eigen::Vector3d to_camera = camera_object - s;
     const double length = to_camera.norm();
