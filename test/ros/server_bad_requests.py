@@ -115,6 +115,19 @@ class ServerBadRequests(unittest.TestCase):
         self.assertTrue(response.success, response.message)
         self.assertGreaterEqual(response.view_index, 0)
 
+    def test_next_best_view_uses_the_latest_estimate_when_the_request_has_no_belief(self):
+        publisher = rospy.Publisher("estimate", BinghamMixture, queue_size=1, latch=True)
+        publisher.publish(girdle_free_belief())
+        deadline = rospy.Time.now() + rospy.Duration(10)
+        response = None
+        while rospy.Time.now() < deadline:
+            response = self.next_best_view(self.sampling_request("information_gain"))
+            if "latest estimate" in response.message:
+                break
+            rospy.sleep(0.1)
+        self.assertTrue(response.success, response.message)
+        self.assertIn("latest estimate", response.message)
+
     def test_next_best_view_refuses_no_candidates_without_sampling(self):
         self.assert_refused(self.next_best_view(GetNextBestViewRequest()), "no candidate")
 
