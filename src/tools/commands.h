@@ -11,5 +11,6 @@ void addViewsCommand(CLI::App& app);
 void addTrainCommand(CLI::App& app);
 void addInspectCommand(CLI::App& app);
 void addHeatmapCommand(CLI::App& app);
+void addEvaluateCommand(CLI::App& app);
 
 }  // namespace vdc::tools

@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   vdc::tools::addTrainCommand(app);
   vdc::tools::addInspectCommand(app);
   vdc::tools::addHeatmapCommand(app);
+  vdc::tools::addEvaluateCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

@@ -1,0 +1,120 @@
+#!/usr/bin/python3
+"""Plots the evaluation written by `vdc evaluate` (paper figure 4 and its extensions).
+Usage: plot_evaluation.py DIR/summary.json OUT_DIR
+
+Writes OUT_DIR/evaluation_<planner>.png for each planner: the median MAP error over the
+sequences after each view, one line per visibility setting, with the single-view PPF baseline's
+median error of each setting as a dashed horizontal line of the same colour. When several planners
+were run, OUT_DIR/evaluation_planners.png compares them, one panel per visibility setting.
+The y axis is logarithmic (errors span from ~1 to 180 degrees) with plain degree tick labels.
+"""
+import json
+import pathlib
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.ticker as mticker  # noqa: E402
+
+DEGREE_TICKS = [1, 2, 5, 10, 20, 50, 100, 180]
+
+
+def setting_label(setting):
+    if setting["visibility"] == "all":
+        return "all (100 %)"
+    radius_cm = float(setting["visibility"]) * 100
+    return f"r_vis {radius_cm:g} cm ({100 * setting['visible_fraction']:.1f} %)"
+
+
+def degree_axis(ax, views):
+    ax.set_yscale("log")
+    ax.set_ylim(0.5, 200)
+    ax.yaxis.set_major_locator(mticker.FixedLocator(DEGREE_TICKS))
+    ax.yaxis.set_major_formatter(mticker.FixedFormatter([str(t) for t in DEGREE_TICKS]))
+    ax.yaxis.set_minor_formatter(mticker.NullFormatter())
+    ax.set_xlim(0.8, views + 0.2)
+    ax.xaxis.set_major_locator(mticker.MaxNLocator(integer=True))
+    ax.set_xlabel("number of views")
+    ax.set_ylabel("median MAP error [deg]")
+    ax.grid(True, which="major", alpha=0.3)
+
+
+def floor(values):
+    # A perfect estimate (0 degrees) has no place on a log axis: show it at the axis floor.
+    return [max(v, 0.5) for v in values]
+
+
+def plot_planner(summary, planner, baseline, out_path):
+    views = summary["views"]
+    figure, ax = plt.subplots(figsize=(7.5, 5))
+    colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    baseline_by_setting = {}
+    if baseline:
+        baseline_by_setting = {s["visibility"]: s["median_error_deg"] for s in baseline["settings"]}
+    for k, setting in enumerate(planner["settings"]):
+        colour = colours[k % len(colours)]
+        x = list(range(1, len(setting["median_error_deg"]) + 1))
+        ax.plot(x, floor(setting["median_error_deg"]), marker="o", markersize=3, color=colour,
+                label=setting_label(setting))
+        if setting["visibility"] in baseline_by_setting:
+            ax.axhline(max(baseline_by_setting[setting["visibility"]], 0.5), color=colour,
+                       linestyle="--", linewidth=1, alpha=0.7)
+    degree_axis(ax, views)
+    title = (f"Median MAP error, planner '{planner['planner']}' "
+             f"({summary['sequences']} sequences, {planner['ms_per_view']:.0f} ms/view)")
+    if baseline:
+        ax.plot([], [], color="grey", linestyle="--",
+                label=f"{baseline['name']}, single view ({baseline['ms_per_view']:.0f} ms/view)")
+    ax.set_title(title, fontsize=10)
+    ax.legend(fontsize=8, loc="best", framealpha=0.8)
+    figure.tight_layout()
+    figure.savefig(out_path, dpi=110)
+    plt.close(figure)
+
+
+def plot_planners(summary, out_path):
+    planners = summary["planners"]
+    settings = [s["visibility"] for s in planners[0]["settings"]]
+    columns = min(4, len(settings))
+    rows = (len(settings) + columns - 1) // columns
+    figure, axes = plt.subplots(rows, columns, figsize=(4.2 * columns, 3.4 * rows), squeeze=False)
+    for index, visibility in enumerate(settings):
+        ax = axes[index // columns][index % columns]
+        for planner in planners:
+            setting = next(s for s in planner["settings"] if s["visibility"] == visibility)
+            x = list(range(1, len(setting["median_error_deg"]) + 1))
+            ax.plot(x, floor(setting["median_error_deg"]), marker="o", markersize=3,
+                    label=planner["planner"])
+        degree_axis(ax, summary["views"])
+        ax.set_title(setting_label(setting), fontsize=9)
+        ax.legend(fontsize=7)
+    for index in range(len(settings), rows * columns):
+        axes[index // columns][index % columns].axis("off")
+    figure.suptitle(f"Median MAP error by planner ({summary['sequences']} sequences)", fontsize=11)
+    figure.tight_layout()
+    figure.savefig(out_path, dpi=110)
+    plt.close(figure)
+
+
+def main(summary_path, out_dir):
+    summary = json.loads(pathlib.Path(summary_path).read_text())
+    out_dir = pathlib.Path(out_dir)
+    written = []
+    for planner in summary["planners"]:
+        path = out_dir / f"evaluation_{planner['planner']}.png"
+        plot_planner(summary, planner, summary.get("baseline"), path)
+        written.append(path)
+    if len(summary["planners"]) > 1:
+        path = out_dir / "evaluation_planners.png"
+        plot_planners(summary, path)
+        written.append(path)
+    for path in written:
+        print(f"wrote {path}")
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 3:
+        sys.exit("usage: plot_evaluation.py SUMMARY.json OUT_DIR")
+    main(sys.argv[1], sys.argv[2])
