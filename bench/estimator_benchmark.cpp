@@ -1,0 +1,259 @@
+// Per-view latency of the online estimator (issue 5, "Benchmarks"): one cloud in, one fused
+// estimate out, split by stage, for the default mug view and for clouds of ~1k to ~300k object
+// points, plus the process's peak memory.
+//
+// Model: the bundle named by the environment variable VDC_BENCH_MODEL, else a quick mug model
+// (quickTrainingParameters(), ~35 s) trained once at start-up; the context block of the output
+// says which. Classification cost grows with the number of views, so figures for the default
+// model (42 views) are the ones to quote.
+//
+// Cloud sizes: a depth camera sees the mug at 0.6 m with ~5000 points (fx = fy = 525). The
+// number of object pixels grows with the square of the focal length, so the size cases scale
+// fx, fy by s = sqrt(target / points at s = 1), measured on the same view and refined once. The
+// image is cropped to a square window around the principal point that still holds the whole
+// mug (side 0.3 f pixels: the mug's largest extent, ~0.15 m, seen from >= 0.5 m), so a 300k-point
+// view does not allocate a 20-megapixel organised cloud. Only the object's density changes; the
+// camera distance, noise model and view stay those of the default case.
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "view_direction_classification/core/camera.h"
+#include "view_direction_classification/core/depth_renderer.h"
+#include "view_direction_classification/core/feature_selection.h"
+#include "view_direction_classification/core/fpfh_features.h"
+#include "view_direction_classification/core/model_bundle.h"
+#include "view_direction_classification/core/model_training.h"
+#include "view_direction_classification/core/mug_mesh.h"
+#include "view_direction_classification/core/orientation_estimator.h"
+
+namespace {
+
+constexpr double kDistance = 0.6;  // the default (training) distance [m]
+
+// The model every case uses, loaded or trained on first use.
+std::shared_ptr<const vdc::ModelBundle> benchModel() {
+  static const std::shared_ptr<const vdc::ModelBundle> model = [] {
+    const char* path = std::getenv("VDC_BENCH_MODEL");
+    if (path != nullptr && *path != '\0') {
+      benchmark::AddCustomContext("model", std::string("loaded from VDC_BENCH_MODEL=") + path);
+      return std::make_shared<const vdc::ModelBundle>(vdc::loadModelBundle(path));
+    }
+    std::cerr << "VDC_BENCH_MODEL not set: training a quick mug model (~35 s)..." << std::endl;
+    vdc::TrainingParameters parameters = vdc::quickTrainingParameters();
+    parameters.mesh_name = "mug";
+    benchmark::AddCustomContext("model",
+                                "quick mug model trained at start-up (12 views; set "
+                                "VDC_BENCH_MODEL to a bundle for the default model's figures)");
+    return std::make_shared<const vdc::ModelBundle>(vdc::trainModel(vdc::makeMug(), parameters));
+  }();
+  return model;
+}
+
+// Peak resident set size of this process [MiB] (VmHWM), or -1 if /proc is unavailable.
+double peakResidentMiB() {
+  std::ifstream status("/proc/self/status");
+  std::string key;
+  while (status >> key) {
+    if (key == "VmHWM:") {
+      double kib = 0;
+      status >> kib;
+      return kib / 1024.0;
+    }
+    status.ignore(1 << 12, '\n');
+  }
+  return -1.0;
+}
+
+// The mug stands at a fixed, non-trivial pose in the world; the camera moves around it.
+Eigen::Isometry3d worldFromObject() {
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.linear() = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  pose.translation() = Eigen::Vector3d(0.4, -0.2, 0.8);
+  return pose;
+}
+
+struct View {
+  pcl::PointCloud<pcl::PointXYZ> cloud;  // camera frame, organised, noisy
+  Eigen::Isometry3d world_from_camera;
+};
+
+// A fixed sequence of viewing directions around the mug (side, handle, top, oblique, below, ...):
+// what a camera moving around the object sees, so fusion works on a realistic belief.
+std::vector<Eigen::Vector3d> sequenceDirections() {
+  return {{1, 0, 0.2},   {0, 1, 0.3},    {0.3, 0.2, 1}, {-1, 0.5, -0.3},  {1, 1, 1},
+          {-0.4, -1, 0}, {0.2, 0.1, -1}, {-1, -1, 0.5}, {0.6, -0.8, 0.4}, {-0.2, 0.9, -0.6}};
+}
+
+View renderView(const vdc::DepthRenderer& renderer, const Eigen::Vector3d& direction, double roll,
+                std::uint32_t seed) {
+  const Eigen::Isometry3d camera_from_object = vdc::cameraFromObject(direction, kDistance, roll);
+  std::mt19937 rng(seed);
+  return {renderer.render(camera_from_object, vdc::DepthNoiseModel{true}, &rng),
+          worldFromObject() * camera_from_object.inverse()};
+}
+
+// Averages the stages of every update of a run into per-update counters.
+struct StageTotals {
+  vdc::UpdateTiming sum;
+  double features = 0, object_points = 0;
+  int updates = 0;
+
+  void add(const vdc::ViewUpdate& update) {
+    sum.segmentation += update.timing.segmentation;
+    sum.features += update.timing.features;
+    sum.classification += update.timing.classification;
+    sum.measurement += update.timing.measurement;
+    sum.fusion += update.timing.fusion;
+    sum.total += update.timing.total;
+    features += update.features;
+    object_points += update.object_points;
+    ++updates;
+  }
+  void report(benchmark::State& state) const {
+    const double n = updates > 0 ? updates : 1;
+    state.counters["features_ms"] = sum.features / n;
+    state.counters["classification_ms"] = sum.classification / n;
+    state.counters["measurement_ms"] = sum.measurement / n;
+    state.counters["fusion_ms"] = sum.fusion / n;
+    state.counters["total_ms"] = sum.total / n;
+    state.counters["features"] = features / n;
+    state.counters["points"] = object_points / n;
+    state.counters["peak_MiB"] = peakResidentMiB();
+  }
+};
+
+// (a) The default mug view: a sequence of updates from the directions above (the filter starts
+// again from the uniform prior after each sequence, outside the timed region).
+void BM_MugViewSequence(benchmark::State& state) {
+  const auto model = benchModel();
+  const vdc::DepthRenderer renderer(vdc::makeMug(), vdc::intrinsicsOf(model->parameters));
+  std::vector<View> views;
+  const std::vector<Eigen::Vector3d> directions = sequenceDirections();
+  for (std::size_t i = 0; i < directions.size(); ++i) {
+    views.push_back(renderView(renderer, directions[i], 0.4 * static_cast<double>(i),
+                               static_cast<std::uint32_t>(100 + i)));
+  }
+  vdc::OrientationEstimator estimator(model, vdc::EstimatorParameters{});
+  StageTotals totals;
+  std::size_t next = 0;
+  for (auto _ : state) {
+    if (next == views.size()) {
+      state.PauseTiming();
+      estimator.reset();
+      next = 0;
+      state.ResumeTiming();
+    }
+    const View& view = views[next++];
+    const vdc::ViewUpdate update = estimator.update(view.cloud, view.world_from_camera);
+    if (!update.updated) state.SkipWithError(update.skip_reason.c_str());
+    totals.add(update);
+  }
+  totals.report(state);
+  state.counters["belief_components"] = static_cast<double>(estimator.belief().size());
+}
+BENCHMARK(BM_MugViewSequence)->Unit(benchmark::kMillisecond)->MinTime(5.0);
+
+// Intrinsics whose focal length is `scale` times the model's, cropped around the mug (see the
+// file comment).
+vdc::CameraIntrinsics scaledIntrinsics(const vdc::CameraIntrinsics& base, double scale) {
+  vdc::CameraIntrinsics scaled;
+  scaled.fx = base.fx * scale;
+  scaled.fy = base.fy * scale;
+  const int side = static_cast<int>(std::ceil(0.3 * std::max(scaled.fx, scaled.fy)));
+  scaled.width = scaled.height = side;
+  scaled.cx = scaled.cy = 0.5 * (side - 1);
+  return scaled;
+}
+
+// A view of the mug (one oblique direction, handle visible) with about `target` object points.
+View viewWithPoints(const vdc::ModelBundle& model, double target) {
+  const Eigen::Vector3d direction(1, 1, 1);
+  const vdc::CameraIntrinsics base = vdc::intrinsicsOf(model.parameters);
+  double scale = 1.0;
+  View view;
+  for (int refinement = 0; refinement < 3; ++refinement) {
+    const vdc::DepthRenderer renderer(vdc::makeMug(), scaledIntrinsics(base, scale));
+    view = renderView(renderer, direction, 0.3, 7);
+    const double points = static_cast<double>(vdc::countValidPoints(view.cloud));
+    scale *= std::sqrt(target / points);
+  }
+  return view;
+}
+
+// (b) Features + classification only (what the cloud's size changes), at ~state.range(0) object
+// points.
+void BM_FeaturesAndClassificationByCloudSize(benchmark::State& state) {
+  const auto model = benchModel();
+  const View view = viewWithPoints(*model, static_cast<double>(state.range(0)));
+  const vdc::FeatureParameters parameters = vdc::featureParametersOf(model->parameters);
+  double features_ms = 0, classification_ms = 0, features = 0;
+  using Clock = std::chrono::steady_clock;
+  for (auto _ : state) {
+    const Clock::time_point start = Clock::now();
+    const vdc::FeatureSet set = vdc::computeFeatures(view.cloud, parameters);
+    const Clock::time_point described = Clock::now();
+    const Eigen::MatrixXf probabilities = model->classifier.predict(set.descriptors);
+    const Eigen::VectorXd p_sum = vdc::summedDistribution(probabilities, model->parameters.n_feat);
+    benchmark::DoNotOptimize(p_sum.data());
+    const Clock::time_point classified = Clock::now();
+    features_ms += std::chrono::duration<double, std::milli>(described - start).count();
+    classification_ms += std::chrono::duration<double, std::milli>(classified - described).count();
+    features += static_cast<double>(set.size());
+  }
+  const double n = static_cast<double>(state.iterations());
+  state.counters["features_ms"] = features_ms / n;
+  state.counters["classification_ms"] = classification_ms / n;
+  state.counters["features"] = features / n;
+  state.counters["points"] = static_cast<double>(vdc::countValidPoints(view.cloud));
+  state.counters["peak_MiB"] = peakResidentMiB();
+}
+BENCHMARK(BM_FeaturesAndClassificationByCloudSize)
+    ->Arg(1000)
+    ->Arg(10000)
+    ->Arg(100000)
+    ->Arg(300000)
+    ->Unit(benchmark::kMillisecond);
+
+// (b) The full update at ~state.range(0) object points, from the uniform prior each time (the
+// reset is outside the timed region), so every size fuses into the same belief.
+void BM_FullUpdateByCloudSize(benchmark::State& state) {
+  const auto model = benchModel();
+  const View view = viewWithPoints(*model, static_cast<double>(state.range(0)));
+  vdc::OrientationEstimator estimator(model, vdc::EstimatorParameters{});
+  StageTotals totals;
+  for (auto _ : state) {
+    state.PauseTiming();
+    estimator.reset();
+    state.ResumeTiming();
+    const vdc::ViewUpdate update = estimator.update(view.cloud, view.world_from_camera);
+    if (!update.updated) state.SkipWithError(update.skip_reason.c_str());
+    totals.add(update);
+  }
+  totals.report(state);
+}
+BENCHMARK(BM_FullUpdateByCloudSize)
+    ->Arg(1000)
+    ->Arg(10000)
+    ->Arg(100000)
+    ->Arg(300000)
+    ->Unit(benchmark::kMillisecond);
+
+// (c) Peak memory of everything above (runs last: benchmarks run in registration order).
+void BM_PeakMemory(benchmark::State& state) {
+  for (auto _ : state) benchmark::DoNotOptimize(peakResidentMiB());
+  state.counters["peak_MiB"] = peakResidentMiB();
+}
+BENCHMARK(BM_PeakMemory)->Iterations(1);
+
+}  // namespace
+
+BENCHMARK_MAIN();
