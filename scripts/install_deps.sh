@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
 # Installs the Debian packages this package builds, tests and runs with.
 # Idempotent: does nothing (and needs no network) when everything is already installed.
-# Usage: scripts/install_deps.sh [--gui]   (--gui adds rviz, Xvfb and ImageMagick)
+# Usage: scripts/install_deps.sh [--gui]   (--gui adds rviz, Xvfb, ImageMagick and PIL: the rviz
+# screenshot test, which `make test` runs)
 set -euo pipefail
 
 packages=(
   # toolchain and catkin
   build-essential cmake catkin python3-catkin-pkg python3-empy
   # ROS 1 C++ libraries and their message definitions
-  libroscpp-dev libnodeletlib-dev pluginlib-dev libpcl-ros-dev libpcl-conversions-dev
+  libroscpp-dev libnodeletlib-dev libnodeletlib-tools pluginlib-dev libpcl-ros-dev libpcl-conversions-dev
   libtf2-ros-dev libtf2-eigen-dev libtf2-geometry-msgs-dev libtf2-sensor-msgs-dev
   libsensor-msgs-dev libgeometry-msgs-dev libvisualization-msgs-dev libstd-srvs-dev
   libstd-msgs-dev libdiagnostic-updater-dev libdiagnostic-msgs-dev
@@ -27,7 +28,7 @@ packages=(
   libopencv-contrib-dev libopencv-dev
 )
 if [[ "${1:-}" == "--gui" ]]; then
-  packages+=(rviz xvfb xauth imagemagick)
+  packages+=(rviz xvfb xauth imagemagick python3-pil)
 fi
 
 missing=()
