@@ -99,7 +99,8 @@ int chooseCandidate(EvaluationPlanner planner, const NextBestViewPlanner* utilit
 struct RunOutput {
   std::vector<double> errors;
   int skipped = 0;
-  double update_ms = 0, planning_ms = 0;
+  double update_ms = 0, planning_ms = 0, map_ms = 0;
+  UpdateTiming stage_ms;  // sums
   int planned = 0;
 };
 
@@ -289,9 +290,17 @@ EvaluationResult evaluateEstimator(std::shared_ptr<const ModelBundle> model,
         const ViewUpdate update =
             estimator.update(cloud, world_from_object * camera_from_object.inverse());
         out.update_ms += update.timing.total;
+        out.stage_ms.segmentation += update.timing.segmentation;
+        out.stage_ms.features += update.timing.features;
+        out.stage_ms.classification += update.timing.classification;
+        out.stage_ms.measurement += update.timing.measurement;
+        out.stage_ms.fusion += update.timing.fusion;
+        out.stage_ms.total += update.timing.total;
         if (!update.updated) ++out.skipped;
-        out.errors.push_back(
-            rotationErrorDeg(estimator.mapOrientation(), sequence.world_from_object));
+        const auto map_start = std::chrono::steady_clock::now();
+        const Eigen::Vector4d map = estimator.mapOrientation();
+        out.map_ms += millisecondsSince(map_start);
+        out.errors.push_back(rotationErrorDeg(map, sequence.world_from_object));
 #pragma omp critical(vdc_evaluation_progress)
         reportProgress(progress, stage, ++done_views, total_views);
       }
@@ -304,7 +313,7 @@ EvaluationResult evaluateEstimator(std::shared_ptr<const ModelBundle> model,
 
   EvaluationResult result;
   result.planner = evaluationPlannerName(planner);
-  double update_ms = 0, planning_ms = 0;
+  double update_ms = 0, planning_ms = 0, map_ms = 0;
   int planned = 0;
   for (int k = 0; k < settings_count; ++k) {
     SettingErrors setting;
@@ -319,11 +328,25 @@ EvaluationResult evaluateEstimator(std::shared_ptr<const ModelBundle> model,
       setting.skipped_views += out.skipped;
       update_ms += out.update_ms;
       planning_ms += out.planning_ms;
+      map_ms += out.map_ms;
+      result.mean_stage_ms.segmentation += out.stage_ms.segmentation;
+      result.mean_stage_ms.features += out.stage_ms.features;
+      result.mean_stage_ms.classification += out.stage_ms.classification;
+      result.mean_stage_ms.measurement += out.stage_ms.measurement;
+      result.mean_stage_ms.fusion += out.stage_ms.fusion;
+      result.mean_stage_ms.total += out.stage_ms.total;
       planned += out.planned;
     }
     result.settings.push_back(std::move(setting));
   }
-  result.mean_update_ms = update_ms / static_cast<double>(total_views);
+  const double views_done = static_cast<double>(total_views);
+  result.mean_update_ms = update_ms / views_done;
+  result.mean_map_ms = map_ms / views_done;
+  for (double* stage : {&result.mean_stage_ms.segmentation, &result.mean_stage_ms.features,
+                        &result.mean_stage_ms.classification, &result.mean_stage_ms.measurement,
+                        &result.mean_stage_ms.fusion, &result.mean_stage_ms.total}) {
+    *stage /= views_done;
+  }
   result.mean_planning_ms = planned > 0 ? planning_ms / planned : 0.0;
   return result;
 }

@@ -198,6 +198,13 @@ void runEvaluate(EvaluateOptions options, const CLI::App& command) {
     planner_summaries.push_back({{"planner", result.planner},
                                  {"ms_per_view", result.mean_update_ms},
                                  {"planning_ms_per_view", result.mean_planning_ms},
+                                 {"map_ms_per_view", result.mean_map_ms},
+                                 {"stage_ms_per_view",
+                                  {{"segmentation", result.mean_stage_ms.segmentation},
+                                   {"features", result.mean_stage_ms.features},
+                                   {"classification", result.mean_stage_ms.classification},
+                                   {"measurement", result.mean_stage_ms.measurement},
+                                   {"fusion", result.mean_stage_ms.fusion}}},
                                  {"settings", setting_summaries}});
   }
   const double total_seconds =
@@ -225,6 +232,11 @@ void runEvaluate(EvaluateOptions options, const CLI::App& command) {
       std::printf(", %.1f ms/view planning", result.mean_planning_ms);
     }
     std::printf("\n");
+    const UpdateTiming& t = result.mean_stage_ms;
+    std::printf(
+        "  stages: features %.1f, classification %.1f, measurement %.1f, fusion %.1f; MAP %.1f "
+        "ms/view\n",
+        t.features, t.classification, t.measurement, t.fusion, result.mean_map_ms);
     for (const auto& setting : result.settings) {
       const Eigen::VectorXd medians = setting.medianPerView();
       std::printf("  %-5s (%5.1f %% visible): median error",

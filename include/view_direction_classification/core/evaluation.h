@@ -100,7 +100,9 @@ struct EvaluationResult {
   std::string planner;  // "random", ..., or the single-view method's name
   std::vector<SettingErrors> settings;
   double mean_update_ms = 0;    // per view: the estimator's update (or the single-view method)
+  UpdateTiming mean_stage_ms;   // the estimator's update by stage, per view (estimator only)
   double mean_planning_ms = 0;  // per planned view (0 for random)
+  double mean_map_ms = 0;       // per view: the MAP search after the update (estimator only)
 };
 
 // Runs the protocol for one planner with the online estimator: per sequence and setting a fresh
