@@ -91,7 +91,7 @@ nlohmann::json settingSummary(const SettingErrors& setting, int views) {
   for (const int v : {1, 5, 10, 20}) {
     if (v <= views) after[std::to_string(v)] = medians(v - 1);
   }
-  if (views > 20) after[std::to_string(views)] = medians(views - 1);
+  after[std::to_string(views)] = medians(views - 1);  // and after the last view
   return {
       {"visibility", visibilityLabel(setting.radius)},
       {"visible_fraction", setting.visible_fraction},
@@ -243,6 +243,10 @@ void runEvaluate(EvaluateOptions options, const CLI::App& command) {
                   visibilityLabel(setting.radius).c_str(), 100.0 * setting.visible_fraction);
       for (const int v : {1, 5, 10, 20}) {
         if (v <= settings.views) std::printf("  %2d: %6.1f", v, medians(v - 1));
+      }
+      const int last = settings.views;
+      if (last != 1 && last != 5 && last != 10 && last != 20) {
+        std::printf("  %2d: %6.1f", last, medians(last - 1));
       }
       std::printf(" deg\n");
     }
