@@ -18,7 +18,7 @@ struct PpfParameters {
   // The model: stratified surface samples with their mesh normals. PCL's training and matching
   // grow faster than O(n^2) in their number: 1 cm gives 581 points on the mug (training ~2.5 s,
   // matching ~0.2 s a view); 7 mm (1185 points) took 160 s to train and 18 s a view.
-  double model_spacing = 0.01;  // [m]
+  double model_spacing = 0.01;   // [m]
   std::uint32_t model_seed = 1;  // of the surface sampling
   double angle_step_deg = 12.0;  // quantisation of the point-pair angles (Drost: 2 pi / 30)
   double distance_step = 0.005;  // quantisation of the point-pair distance [m]
