@@ -1,12 +1,17 @@
 #include "view_direction_classification/core/fpfh_features.h"
 
-#include <pcl/features/fpfh_omp.h>
 #include <pcl/features/normal_3d_omp.h>
+#include <pcl/features/pfh_tools.h>
 #include <pcl/filters/voxel_grid.h>
 #include <pcl/search/kdtree.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "view_direction_classification/core/error.h"
 
@@ -53,6 +58,117 @@ bool finiteNormal(const pcl::Normal& n) {
   return std::isfinite(n.normal_x) && std::isfinite(n.normal_y) && std::isfinite(n.normal_z);
 }
 
+// FPFH's three sub-histograms of 11 bins each (PCL's FPFHSignature33 layout).
+constexpr int kSubBins = kFpfhBins / 3;
+using Spfh = std::array<float, kFpfhBins>;
+
+// The bins of one point pair's (theta, alpha, phi) angles, as PCL's FPFHEstimation bins them.
+struct PairBins {
+  std::uint8_t f1, f2, f3;
+};
+
+int binOf(double scaled) {
+  const int index = static_cast<int>(std::floor(scaled));
+  return std::clamp(index, 0, kSubBins - 1);
+}
+
+// Simplified point feature histograms (SPFH) of the support points marked `needed`, each over
+// its support neighbours within `radius`: the same histograms as pcl::FPFHEstimation's, at half
+// the cost. PCL orders each pair's points canonically (pcl::computePairFeatures picks the point
+// whose normal is closer to the connecting line as source), so a pair's features are the same
+// from either end and are computed once here for both of its points. Rows of points not needed
+// stay zero.
+std::vector<Spfh> computeSpfh(const Cloud& support, const pcl::PointCloud<pcl::Normal>& normals,
+                              const pcl::search::KdTree<pcl::PointXYZ>& tree,
+                              const std::vector<char>& needed, float radius) {
+  const auto count = static_cast<std::ptrdiff_t>(support.size());
+  std::vector<int> neighbour_count(support.size(), 0);
+  // pairs[i]: the pairs point i computes, with the other point's index.
+  std::vector<std::vector<std::pair<int, PairBins>>> pairs(support.size());
+  const float inverse_two_pi = 1.0f / (2.0f * static_cast<float>(M_PI));  // PCL's d_pi_
+#pragma omp parallel for schedule(dynamic, 16)
+  for (std::ptrdiff_t i = 0; i < count; ++i) {
+    if (!needed[static_cast<std::size_t>(i)]) continue;
+    pcl::Indices indices;
+    std::vector<float> distances;
+    tree.radiusSearch(support[static_cast<std::size_t>(i)], radius, indices, distances);
+    neighbour_count[static_cast<std::size_t>(i)] = static_cast<int>(indices.size());
+    auto& own = pairs[static_cast<std::size_t>(i)];
+    own.reserve(indices.size());
+    const Eigen::Vector4f p1 = support[static_cast<std::size_t>(i)].getVector4fMap();
+    const Eigen::Vector4f n1 = normals[static_cast<std::size_t>(i)].getNormalVector4fMap();
+    for (const auto j : indices) {
+      // A pair with a needed point of lower index is computed by that point.
+      if (j == i || (j < i && needed[static_cast<std::size_t>(j)])) continue;
+      float f1, f2, f3, f4;
+      if (!pcl::computePairFeatures(p1, n1, support[static_cast<std::size_t>(j)].getVector4fMap(),
+                                    normals[static_cast<std::size_t>(j)].getNormalVector4fMap(), f1,
+                                    f2, f3, f4)) {
+        continue;
+      }
+      // PCL's expressions, so that values on a bin edge fall into the same bin.
+      own.emplace_back(
+          static_cast<int>(j),
+          PairBins{static_cast<std::uint8_t>(binOf(kSubBins * ((f1 + M_PI) * inverse_two_pi))),
+                   static_cast<std::uint8_t>(binOf(kSubBins * ((f2 + 1.0) * 0.5))),
+                   static_cast<std::uint8_t>(binOf(kSubBins * ((f3 + 1.0) * 0.5)))});
+    }
+  }
+  // Counts first, then one scale per row: PCL adds 100 / (neighbours - 1) per pair instead,
+  // which differs by float rounding only.
+  std::vector<Spfh> histograms(support.size());
+  for (auto& row : histograms) row.fill(0.0f);
+  for (std::size_t i = 0; i < support.size(); ++i) {
+    for (const auto& [j, bins] : pairs[i]) {
+      for (Spfh* row : {&histograms[i], needed[static_cast<std::size_t>(j)]
+                                            ? &histograms[static_cast<std::size_t>(j)]
+                                            : nullptr}) {
+        if (row == nullptr) continue;
+        (*row)[bins.f1] += 1.0f;
+        (*row)[kSubBins + bins.f2] += 1.0f;
+        (*row)[2 * kSubBins + bins.f3] += 1.0f;
+      }
+    }
+  }
+  for (std::size_t i = 0; i < support.size(); ++i) {
+    if (neighbour_count[i] < 2) continue;  // no pair: the row stays zero (PCL's too)
+    const float increment = 100.0f / static_cast<float>(neighbour_count[i] - 1);
+    for (float& value : histograms[i]) value *= increment;
+  }
+  return histograms;
+}
+
+// FPFH of a keypoint: its support neighbours' SPFH weighted by inverse squared distance, each
+// sub-histogram normalised to sum 100 (pcl::FPFHEstimation::weightPointSPFHSignature; a
+// keypoint is a voxel centroid, not a support point, so it has no SPFH of its own). False if
+// the result is not finite or empty.
+bool weightedHistogram(const std::vector<Spfh>& spfh, const pcl::Indices& indices,
+                       const std::vector<float>& squared_distances,
+                       std::array<float, kFpfhBins>* histogram) {
+  histogram->fill(0.0f);
+  std::array<double, 3> sums = {0.0, 0.0, 0.0};
+  for (std::size_t n = 0; n < indices.size(); ++n) {
+    if (squared_distances[n] == 0.0f) continue;  // PCL skips the query point itself
+    const float weight = 1.0f / squared_distances[n];
+    const Spfh& row = spfh[static_cast<std::size_t>(indices[n])];
+    for (int b = 0; b < kFpfhBins; ++b) {
+      const float value = row[b] * weight;
+      sums[b / kSubBins] += value;
+      (*histogram)[b] += value;
+    }
+  }
+  float total = 0.0f;
+  bool finite = true;
+  for (int b = 0; b < kFpfhBins; ++b) {
+    const double sum = sums[b / kSubBins];
+    const double scale = sum != 0.0 ? 100.0 / sum : sum;
+    (*histogram)[b] = static_cast<float>((*histogram)[b] * scale);
+    finite = finite && std::isfinite((*histogram)[b]);
+    total += (*histogram)[b];
+  }
+  return finite && total > 0.0f;
+}
+
 }  // namespace
 
 FeatureSet computeFeatures(const Cloud& cloud, const FeatureParameters& parameters,
@@ -67,7 +183,9 @@ FeatureSet computeFeatures(const Cloud& cloud, const FeatureParameters& paramete
     return result;
   }
 
-  auto tree = pcl::make_shared<pcl::search::KdTree<pcl::PointXYZ>>();
+  // One kd-tree, rebuilt on the support surface below. Unsorted results: every consumer sums over
+  // its neighbours, so sorting them by distance would only change float rounding, at a cost.
+  auto tree = pcl::make_shared<pcl::search::KdTree<pcl::PointXYZ>>(/*sorted=*/false);
   tree->setInputCloud(surface);
 
   // Normals on the full cloud, so that keypoint descriptors see every neighbour's normal.
@@ -124,41 +242,42 @@ FeatureSet computeFeatures(const Cloud& cloud, const FeatureParameters& paramete
   voxel_grid.filter(*keypoints);
   if (keypoints->empty()) return result;
 
-  pcl::PointCloud<pcl::FPFHSignature33> descriptors;
-  pcl::FPFHEstimationOMP<pcl::PointXYZ, pcl::Normal, pcl::FPFHSignature33> fpfh;
-  fpfh.setInputCloud(keypoints);
-  fpfh.setSearchSurface(support);
-  fpfh.setInputNormals(support_normals);
-  fpfh.setSearchMethod(tree);
-  fpfh.setRadiusSearch(parameters.fpfh_radius);
-  fpfh.compute(descriptors);
-
-  // Keep keypoints with enough support and a finite, non-empty histogram.
-  std::vector<int> neighbour_indices;
-  std::vector<float> neighbour_distances;
-  result.keypoints.reserve(keypoints->size());
-  std::vector<std::size_t> kept;
-  kept.reserve(keypoints->size());
-  for (std::size_t i = 0; i < keypoints->size(); ++i) {
-    const auto& histogram = descriptors[i].histogram;
-    bool finite = true;
-    float total = 0.0f;
-    for (int b = 0; b < kFpfhBins; ++b) {
-      finite = finite && std::isfinite(histogram[b]);
-      total += histogram[b];
-    }
-    if (!finite || !(total > 0.0f)) continue;
-    const int support_count = tree->radiusSearch((*keypoints)[i], parameters.fpfh_radius,
-                                                 neighbour_indices, neighbour_distances);
-    if (support_count < parameters.min_neighbours) continue;
-    kept.push_back(i);
+  // Support neighbourhoods of the keypoints: one search each gives the support count (the
+  // min_neighbours test) and the FPFH weights.
+  const std::size_t keypoint_count = keypoints->size();
+  std::vector<pcl::Indices> keypoint_neighbours(keypoint_count);
+  std::vector<std::vector<float>> keypoint_distances(keypoint_count);
+  std::vector<char> needed(support->size(), 0);
+  std::vector<std::size_t> candidates;
+  candidates.reserve(keypoint_count);
+  for (std::size_t k = 0; k < keypoint_count; ++k) {
+    const int count = tree->radiusSearch((*keypoints)[k], parameters.fpfh_radius,
+                                         keypoint_neighbours[k], keypoint_distances[k]);
+    if (count < parameters.min_neighbours) continue;
+    candidates.push_back(k);
+    for (const auto j : keypoint_neighbours[k]) needed[static_cast<std::size_t>(j)] = 1;
   }
-  result.descriptors.resize(static_cast<Eigen::Index>(kept.size()), kFpfhBins);
-  for (std::size_t row = 0; row < kept.size(); ++row) {
-    const auto& point = (*keypoints)[kept[row]];
+  if (candidates.empty()) return result;
+
+  const std::vector<Spfh> spfh = computeSpfh(*support, *support_normals, *tree, needed,
+                                             static_cast<float>(parameters.fpfh_radius));
+
+  result.keypoints.reserve(candidates.size());
+  std::vector<std::array<float, kFpfhBins>> histograms;
+  histograms.reserve(candidates.size());
+  for (const std::size_t k : candidates) {
+    std::array<float, kFpfhBins> histogram;
+    if (!weightedHistogram(spfh, keypoint_neighbours[k], keypoint_distances[k], &histogram)) {
+      continue;
+    }
+    const auto& point = (*keypoints)[k];
     result.keypoints.emplace_back(point.x, point.y, point.z);
+    histograms.push_back(histogram);
+  }
+  result.descriptors.resize(static_cast<Eigen::Index>(histograms.size()), kFpfhBins);
+  for (std::size_t row = 0; row < histograms.size(); ++row) {
     for (int b = 0; b < kFpfhBins; ++b) {
-      result.descriptors(static_cast<Eigen::Index>(row), b) = descriptors[kept[row]].histogram[b];
+      result.descriptors(static_cast<Eigen::Index>(row), b) = histograms[row][b];
     }
   }
   return result;

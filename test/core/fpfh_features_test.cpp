@@ -1,6 +1,10 @@
 #include "view_direction_classification/core/fpfh_features.h"
 
 #include <gtest/gtest.h>
+#include <pcl/features/fpfh.h>
+#include <pcl/features/normal_3d.h>
+#include <pcl/filters/voxel_grid.h>
+#include <pcl/search/kdtree.h>
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -193,6 +197,59 @@ TEST(FpfhFeatures, SubsampledSupportKeepsDescriptorsClose) {
     return v[v.size() / 2];
   };
   EXPECT_LT(median(differences), 0.25f * median(unrelated));
+}
+
+TEST(FpfhFeatures, MatchPclFpfhEstimationOnTheSameSupport) {
+  // The reference: PCL's own pipeline (normals on the cloud, 4 mm voxel keypoints, FPFHEstimation
+  // with the cloud as search surface). With support_voxel = 0 and every normal finite, the
+  // support surface is the cloud itself, so only float rounding may separate the two.
+  const Cloud cloud = wavySurface();
+  FeatureParameters parameters;
+  parameters.support_voxel = 0.0;
+  const auto surface = cloud.makeShared();
+  auto tree = pcl::make_shared<pcl::search::KdTree<pcl::PointXYZ>>();
+  pcl::PointCloud<pcl::Normal>::Ptr normals(new pcl::PointCloud<pcl::Normal>);
+  pcl::NormalEstimation<pcl::PointXYZ, pcl::Normal> normal_estimation;
+  normal_estimation.setInputCloud(surface);
+  normal_estimation.setSearchMethod(tree);
+  normal_estimation.setRadiusSearch(parameters.normal_radius);
+  normal_estimation.compute(*normals);
+  for (const auto& n : *normals) ASSERT_TRUE(std::isfinite(n.normal_x));
+  Cloud::Ptr keypoints(new Cloud);
+  pcl::VoxelGrid<pcl::PointXYZ> voxel_grid;
+  voxel_grid.setInputCloud(surface);
+  const auto leaf = static_cast<float>(parameters.keypoint_voxel);
+  voxel_grid.setLeafSize(leaf, leaf, leaf);
+  voxel_grid.filter(*keypoints);
+  pcl::PointCloud<pcl::FPFHSignature33> reference;
+  pcl::FPFHEstimation<pcl::PointXYZ, pcl::Normal, pcl::FPFHSignature33> fpfh;
+  fpfh.setInputCloud(keypoints);
+  fpfh.setSearchSurface(surface);
+  fpfh.setInputNormals(normals);
+  fpfh.setSearchMethod(tree);
+  fpfh.setRadiusSearch(parameters.fpfh_radius);
+  fpfh.compute(reference);
+
+  const FeatureSet features = computeFeatures(cloud, parameters);
+  ASSERT_GT(features.size(), 300u);
+  float worst = 0.0f;
+  for (std::size_t i = 0; i < features.size(); ++i) {
+    std::size_t match = 0;
+    float best = std::numeric_limits<float>::max();
+    for (std::size_t j = 0; j < keypoints->size(); ++j) {
+      const float d = ((*keypoints)[j].getVector3fMap() - features.keypoints[i]).squaredNorm();
+      if (d < best) best = d, match = j;
+    }
+    ASSERT_LT(std::sqrt(best), 1e-6f);
+    float difference = 0.0f;
+    for (int b = 0; b < kFpfhBins; ++b) {
+      difference += std::abs(features.descriptors(static_cast<Eigen::Index>(i), b) -
+                             reference[match].histogram[b]);
+    }
+    worst = std::max(worst, difference);
+  }
+  // Rows sum to 300; float rounding moves them by far less than 0.01.
+  EXPECT_LT(worst, 0.01f);
 }
 
 TEST(FpfhFeatures, RejectsNonPositiveRadii) {
