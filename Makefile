@@ -1,23 +1,27 @@
 # The two commands of the README's quick start, and a few helpers around them.
 #   make demo   install what is missing, build, run the demo on the built-in mug
-#   make test   install what is missing, build, run every test; ends with "N passed, N failed"
+#   make test   install what is missing (with rviz and Xvfb for the rviz screenshot test), build,
+#               run every test; ends with "N passed, N failed"
 BUILD_DIR ?= build
 JOBS ?= 2
 export BUILD_DIR JOBS
 # Debian's catkin needs Debian's python3 (a pyenv python3 lacks catkin_pkg).
 export PATH := /usr/bin:/bin:$(PATH)
 
-.PHONY: all deps build test demo bench format clean
+.PHONY: all deps deps-gui build test demo bench format clean
 
 all: build
 
 deps:
 	@scripts/install_deps.sh
 
+deps-gui:
+	@scripts/install_deps.sh --gui
+
 build: deps
 	@scripts/build.sh
 
-test: build
+test: deps-gui build
 	@scripts/run_tests.sh
 
 demo: build
