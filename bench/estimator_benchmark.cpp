@@ -109,12 +109,7 @@ struct StageTotals {
   int updates = 0;
 
   void add(const vdc::ViewUpdate& update) {
-    sum.segmentation += update.timing.segmentation;
-    sum.features += update.timing.features;
-    sum.classification += update.timing.classification;
-    sum.measurement += update.timing.measurement;
-    sum.fusion += update.timing.fusion;
-    sum.total += update.timing.total;
+    sum += update.timing;
     features += update.features;
     object_points += update.object_points;
     ++updates;

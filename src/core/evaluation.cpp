@@ -99,7 +99,7 @@ int chooseCandidate(EvaluationPlanner planner, const NextBestViewPlanner* utilit
 struct RunOutput {
   std::vector<double> errors;
   int skipped = 0;
-  double update_ms = 0, planning_ms = 0, map_ms = 0;
+  double planning_ms = 0, map_ms = 0;
   UpdateTiming stage_ms;  // sums
   int planned = 0;
 };
@@ -289,13 +289,7 @@ EvaluationResult evaluateEstimator(std::shared_ptr<const ModelBundle> model,
                                                 camera_from_object, anchors, radius);
         const ViewUpdate update =
             estimator.update(cloud, world_from_object * camera_from_object.inverse());
-        out.update_ms += update.timing.total;
-        out.stage_ms.segmentation += update.timing.segmentation;
-        out.stage_ms.features += update.timing.features;
-        out.stage_ms.classification += update.timing.classification;
-        out.stage_ms.measurement += update.timing.measurement;
-        out.stage_ms.fusion += update.timing.fusion;
-        out.stage_ms.total += update.timing.total;
+        out.stage_ms += update.timing;
         if (!update.updated) ++out.skipped;
         const auto map_start = std::chrono::steady_clock::now();
         const Eigen::Vector4d map = estimator.mapOrientation();
@@ -313,7 +307,7 @@ EvaluationResult evaluateEstimator(std::shared_ptr<const ModelBundle> model,
 
   EvaluationResult result;
   result.planner = evaluationPlannerName(planner);
-  double update_ms = 0, planning_ms = 0, map_ms = 0;
+  double planning_ms = 0, map_ms = 0;
   int planned = 0;
   for (int k = 0; k < settings_count; ++k) {
     SettingErrors setting;
@@ -326,27 +320,17 @@ EvaluationResult evaluateEstimator(std::shared_ptr<const ModelBundle> model,
         setting.errors_deg(s, v) = out.errors[static_cast<std::size_t>(v)];
       }
       setting.skipped_views += out.skipped;
-      update_ms += out.update_ms;
       planning_ms += out.planning_ms;
       map_ms += out.map_ms;
-      result.mean_stage_ms.segmentation += out.stage_ms.segmentation;
-      result.mean_stage_ms.features += out.stage_ms.features;
-      result.mean_stage_ms.classification += out.stage_ms.classification;
-      result.mean_stage_ms.measurement += out.stage_ms.measurement;
-      result.mean_stage_ms.fusion += out.stage_ms.fusion;
-      result.mean_stage_ms.total += out.stage_ms.total;
+      result.mean_stage_ms += out.stage_ms;
       planned += out.planned;
     }
     result.settings.push_back(std::move(setting));
   }
   const double views_done = static_cast<double>(total_views);
-  result.mean_update_ms = update_ms / views_done;
+  result.mean_stage_ms /= views_done;
+  result.mean_update_ms = result.mean_stage_ms.total;
   result.mean_map_ms = map_ms / views_done;
-  for (double* stage : {&result.mean_stage_ms.segmentation, &result.mean_stage_ms.features,
-                        &result.mean_stage_ms.classification, &result.mean_stage_ms.measurement,
-                        &result.mean_stage_ms.fusion, &result.mean_stage_ms.total}) {
-    *stage /= views_done;
-  }
   result.mean_planning_ms = planned > 0 ? planning_ms / planned : 0.0;
   return result;
 }

@@ -21,6 +21,7 @@
 
 #include "commands.h"
 #include "progress_bar.h"
+#include "python_script.h"
 #include "view_direction_classification/core/error.h"
 #include "view_direction_classification/core/evaluation.h"
 #include "view_direction_classification/core/mesh_io.h"
@@ -28,10 +29,6 @@
 #include "view_direction_classification/core/model_training.h"
 #include "view_direction_classification/core/mug_mesh.h"
 #include "view_direction_classification/core/ppf_baseline.h"
-
-#ifndef VDC_SCRIPTS_DIR
-#define VDC_SCRIPTS_DIR "scripts"
-#endif
 
 namespace vdc::tools {
 
@@ -264,14 +261,8 @@ void runEvaluate(EvaluateOptions options, const CLI::App& command) {
   std::printf("wrote %s and %s (%.0f s)\n", csv_path.c_str(), summary_path.c_str(), total_seconds);
 
   if (options.no_figure) return;
-  std::fflush(stdout);  // keep our lines before the script's in a redirected log
-  const fs::path script = fs::path(VDC_SCRIPTS_DIR) / "plot_evaluation.py";
-  const std::string plot = "/usr/bin/python3 '" + script.string() + "' '" + summary_path.string() +
-                           "' '" + options.out_dir + "'";
-  if (std::system(plot.c_str()) != 0) {
-    throw Error("plotting failed (" + plot + "); errors.csv and summary.json are in " +
-                options.out_dir);
-  }
+  runPythonScript("plot_evaluation.py", {summary_path.string(), options.out_dir}, "plotting",
+                  "errors.csv and summary.json are in " + options.out_dir);
 }
 
 // CLI validators, so a malformed list is a usage error (exit code 2) reported before any work.

@@ -4,21 +4,17 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
 
 #include "commands.h"
+#include "python_script.h"
 #include "view_direction_classification/core/error.h"
 #include "view_direction_classification/core/heatmap_colours.h"
 #include "view_direction_classification/core/model_bundle.h"
 #include "view_direction_classification/core/surface_splat_renderer.h"
-
-#ifndef VDC_SCRIPTS_DIR
-#define VDC_SCRIPTS_DIR "scripts"
-#endif
 
 namespace vdc::tools {
 
@@ -110,14 +106,9 @@ void runHeatmap(const HeatmapOptions& options) {
   std::printf("wrote %zu panels to %s\n", panels.size(), options.out_dir.c_str());
 
   if (options.no_figure) return;
-  const fs::path script = fs::path(VDC_SCRIPTS_DIR) / "plot_heatmaps.py";
   const fs::path figure = fs::path(options.out_dir) / "heatmaps.png";
-  const std::string command = "/usr/bin/python3 '" + script.string() + "' '" +
-                              manifest_path.string() + "' '" + figure.string() + "'";
-  if (std::system(command.c_str()) != 0) {
-    throw Error("composing the figure failed (" + command + "); the single panels are in " +
-                options.out_dir);
-  }
+  runPythonScript("plot_heatmaps.py", {manifest_path.string(), figure.string()},
+                  "composing the figure", "the single panels are in " + options.out_dir);
   std::printf("wrote %s\n", figure.c_str());
 }
 

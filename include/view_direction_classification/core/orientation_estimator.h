@@ -30,6 +30,26 @@ struct EstimatorParameters {
 // Wall-clock time of each stage of one update [ms].
 struct UpdateTiming {
   double segmentation = 0, features = 0, classification = 0, measurement = 0, fusion = 0, total = 0;
+
+  // Stage-wise sums and means over many updates (benchmarks, the evaluation).
+  UpdateTiming& operator+=(const UpdateTiming& other) {
+    segmentation += other.segmentation;
+    features += other.features;
+    classification += other.classification;
+    measurement += other.measurement;
+    fusion += other.fusion;
+    total += other.total;
+    return *this;
+  }
+  UpdateTiming& operator/=(double count) {
+    segmentation /= count;
+    features /= count;
+    classification /= count;
+    measurement /= count;
+    fusion /= count;
+    total /= count;
+    return *this;
+  }
 };
 
 // What one view did.
