@@ -92,7 +92,7 @@ TEST_F(OrientationEstimatorTest, UsesTheBundlesFeatureCountAndAGridWideKappaByDe
   EXPECT_NEAR(estimator.kappa(), std::log(2.0) / std::pow(std::sin(1.1071 / 4), 2), 0.05);
 }
 
-TEST_F(OrientationEstimatorTest, OneViewFusesAMeasurementWhoseGirdleContainsTheTruth) {
+TEST_F(OrientationEstimatorTest, OneViewFusesAMeasurementThatNarrowsTheBelief) {
   OrientationEstimator estimator(test::quickMugModel(), {});
   const auto [cloud, world_from_camera] =
       view(Eigen::Vector3d(0.3, -0.5, 0.8).normalized(), 0.4, 1);
