@@ -8,6 +8,7 @@ import subprocess
 import tempfile
 import unittest
 
+import roslib.packages
 import rostest
 
 PACKAGE = "view_direction_classification"
@@ -20,8 +21,13 @@ def run_estimator(*parameters):
     """Runs the node binary in the test's ROS graph under a fresh name (private parameters set
     with _name:=value stay on the parameter server); returns (exit code, stdout + stderr)."""
     name = "__name:=estimator_under_test_%d" % next(RUNS)
+    # Found as roslaunch finds nodes: rosrun skips executables below <package>/build/, which is
+    # where `make test` builds.
+    executables = roslib.packages.find_node(PACKAGE, "orientation_estimator")
+    if not executables:
+        raise RuntimeError("the orientation_estimator binary is not built")
     result = subprocess.run(
-        ["rosrun", PACKAGE, "orientation_estimator", name, *parameters],
+        [executables[0], name, *parameters],
         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=60, check=False)
     return result.returncode, result.stdout.decode(errors="replace")
 
