@@ -108,6 +108,27 @@ TEST(BinghamNormalizer, GradientEntriesArePositiveSecondMomentsSummingBelowF) {
   EXPECT_LT(f.gradient.sum(), f.value);
 }
 
+TEST(BinghamNormalizer, UpperBoundHoldsEverywhereAndIsExactForGirdles) {
+  std::mt19937 generator(7);
+  std::uniform_real_distribution<double> log_magnitude(-3.0, 5.0);
+  for (int trial = 0; trial < 300; ++trial) {
+    Eigen::Vector3d z;
+    for (int i = 0; i < 3; ++i) z(i) = -std::pow(10.0, log_magnitude(generator));
+    if (trial % 3 == 0) z(trial % 2) = 0.0;  // also concentrations at the boundary
+    EXPECT_LE(std::log(binghamNormalizer(z)), binghamLogNormalizerUpperBound(z) + 1e-12)
+        << "z = " << z.transpose();
+  }
+  // F(z2, z2, 0) is the bound itself, whatever the order.
+  EXPECT_NEAR(binghamLogNormalizerUpperBound(Eigen::Vector3d(0.0, -30.0, -30.0)),
+              std::log(girdleClosedForm(30.0)), 1e-12);
+  // The bound tightens with concentration: a mixture product prunes with it.
+  EXPECT_LT(binghamLogNormalizerUpperBound(Eigen::Vector3d(-1e4, -1e3, -1e2)),
+            std::log(kTwoPiSquared) - 6.0);
+  EXPECT_NEAR(binghamLogNormalizerUpperBound(Eigen::Vector3d::Zero()), std::log(kTwoPiSquared),
+              1e-15);
+  EXPECT_THROW(binghamLogNormalizerUpperBound(Eigen::Vector3d(-1.0, 0.5, 0.0)), Error);
+}
+
 TEST(BinghamNormalizer, ScaledBesselFunctionsMatchReferenceValuesAndJoinTheAsymptoticBranch) {
   EXPECT_NEAR(besselI0Scaled(0.0), 1.0, 1e-15);
   EXPECT_NEAR(besselI0Scaled(1.0), 0.46575960759364043, 1e-15);

@@ -27,6 +27,11 @@ double binghamNormalizer(const Eigen::Vector3d& z);
 // F(z) and dF/dz together (one quadrature). Throws vdc::Error as binghamNormalizer.
 BinghamNormalizer binghamNormalizerWithGradient(const Eigen::Vector3d& z);
 
+// An upper bound on log F(z) that needs no quadrature: F grows in every concentration, so with z
+// sorted (z1 <= z2 <= z3 <= 0), F(z) <= F(z2, z2, 0) = 2 pi^2 (1 - e^{z2}) / -z2. Mixture
+// products use it to skip pairs whose weight cannot matter. Same preconditions as F.
+double binghamLogNormalizerUpperBound(const Eigen::Vector3d& z);
+
 // Exponentially scaled modified Bessel functions of the first kind, e^{-x} I_0(x) and
 // e^{-x} I_1(x), for x >= 0. Finite for every finite x (I_0 itself overflows beyond x ~ 700).
 double besselI0Scaled(double x);
