@@ -188,10 +188,24 @@ FeatureSet computeFeatures(const Cloud& cloud, const FeatureParameters& paramete
   auto tree = pcl::make_shared<pcl::search::KdTree<pcl::PointXYZ>>(/*sorted=*/false);
   tree->setInputCloud(surface);
 
-  // Normals on the full cloud, so that keypoint descriptors see every neighbour's normal.
+  // The FPFH search surface: voxel centroids of the cloud (or the cloud itself). At 0.6 m a depth
+  // camera samples the surface every ~1.1 mm, far denser than a 3 cm descriptor needs.
+  Cloud::Ptr support_candidates = surface;
+  if (parameters.support_voxel > 0.0) {
+    support_candidates = pcl::make_shared<Cloud>();
+    pcl::VoxelGrid<pcl::PointXYZ> reduce;
+    reduce.setInputCloud(surface);
+    const auto edge = static_cast<float>(parameters.support_voxel);
+    reduce.setLeafSize(edge, edge, edge);
+    reduce.filter(*support_candidates);
+  }
+
+  // Normals only where FPFH needs them (the support points), each from the full-resolution cloud
+  // within normal_radius: the cost follows the support, not the camera's resolution.
   auto normals = pcl::make_shared<pcl::PointCloud<pcl::Normal>>();
   pcl::NormalEstimationOMP<pcl::PointXYZ, pcl::Normal> normal_estimation;
-  normal_estimation.setInputCloud(surface);
+  normal_estimation.setInputCloud(support_candidates);
+  normal_estimation.setSearchSurface(surface);
   normal_estimation.setSearchMethod(tree);
   normal_estimation.setRadiusSearch(parameters.normal_radius);
   normal_estimation.setViewPoint(viewpoint.x(), viewpoint.y(), viewpoint.z());
@@ -199,37 +213,14 @@ FeatureSet computeFeatures(const Cloud& cloud, const FeatureParameters& paramete
 
   // FPFH's pair features use every support point's normal; a NaN normal (too few neighbours
   // within normal_radius) would poison the histogram, so such points leave the search surface.
-  pcl::PointCloud<pcl::PointNormal> oriented;
-  oriented.reserve(surface->size());
-  for (std::size_t i = 0; i < surface->size(); ++i) {
-    if (!finiteNormal((*normals)[i])) continue;
-    pcl::PointNormal p;
-    p.getVector3fMap() = (*surface)[i].getVector3fMap();
-    p.getNormalVector3fMap() = (*normals)[i].getNormalVector3fMap();
-    p.curvature = (*normals)[i].curvature;
-    oriented.push_back(p);
-  }
-  if (parameters.support_voxel > 0.0 && !oriented.empty()) {
-    // Voxel centroids with averaged (then renormalised) normals: the normals still come from the
-    // full-resolution cloud, only the FPFH pair statistics are computed on fewer points.
-    pcl::PointCloud<pcl::PointNormal> reduced;
-    pcl::VoxelGrid<pcl::PointNormal> reduce;
-    reduce.setInputCloud(oriented.makeShared());
-    const auto edge = static_cast<float>(parameters.support_voxel);
-    reduce.setLeafSize(edge, edge, edge);
-    reduce.filter(reduced);
-    oriented.swap(reduced);
-  }
   auto support = pcl::make_shared<Cloud>();
   auto support_normals = pcl::make_shared<pcl::PointCloud<pcl::Normal>>();
-  support->reserve(oriented.size());
-  support_normals->reserve(oriented.size());
-  for (const auto& p : oriented) {
-    const Eigen::Vector3f n = p.getNormalVector3fMap();
-    if (!(n.norm() > 1e-6f)) continue;  // opposite normals averaged away: no usable direction
-    support->push_back(pcl::PointXYZ(p.x, p.y, p.z));
-    const Eigen::Vector3f unit = n.normalized();
-    support_normals->push_back(pcl::Normal(unit.x(), unit.y(), unit.z()));
+  support->reserve(support_candidates->size());
+  support_normals->reserve(support_candidates->size());
+  for (std::size_t i = 0; i < support_candidates->size(); ++i) {
+    if (!finiteNormal((*normals)[i])) continue;
+    support->push_back((*support_candidates)[i]);
+    support_normals->push_back((*normals)[i]);
   }
   if (support->size() < static_cast<std::size_t>(parameters.min_neighbours)) return result;
   tree->setInputCloud(support);

@@ -116,6 +116,14 @@ void addTrainCommand(CLI::App& app) {
   train->add_option("--l2", p.l2, "L2 regularisation of the classifier")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 100.0));
+  train->add_option("--keypoint-voxel", p.keypoint_voxel, "voxel edge of the keypoints [m]")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0005, 0.1));
+  train
+      ->add_option("--support-voxel", p.support_voxel,
+                   "voxel edge of the FPFH search surface [m]; 0: the full cloud")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 0.1));
   train->add_flag("--no-noise", options->no_noise, "render training clouds without noise");
   train->callback([options, train] { runTrain(*options, *train); });
 }
