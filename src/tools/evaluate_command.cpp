@@ -215,6 +215,11 @@ void runEvaluate(EvaluateOptions options, const CLI::App& command) {
       {"seed", settings.seed},
       {"distance_m", settings.distance},
       {"noise", settings.noise},
+      {"estimator",
+       {{"n_feat", settings.estimator.n_feat},
+        {"kappa", settings.estimator.kappa},
+        {"max_components", settings.estimator.max_components},
+        {"min_weight", settings.estimator.min_weight}}},
       {"seconds_total", total_seconds},
       {"planners", planner_summaries},
       {"baseline",
@@ -327,6 +332,25 @@ void addEvaluateCommand(CLI::App& app) {
   evaluate->add_option("--threads", s.threads, "OpenMP threads (0: all cores)")
       ->capture_default_str()
       ->check(CLI::Range(0, 256));
+  // The estimator's tuning knobs (METHOD.md: tune every default with this evaluation).
+  evaluate
+      ->add_option("--n-feat", s.estimator.n_feat,
+                   "most certain features summed per view; 0: the model's value")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 100000));
+  evaluate
+      ->add_option("--kappa", s.estimator.kappa,
+                   "girdle concentration; 0: the default for the model's view spacing")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1e6));
+  evaluate->add_option("--max-components", s.estimator.max_components, "K_max of the belief")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100000));
+  evaluate
+      ->add_option("--min-weight", s.estimator.min_weight,
+                   "measurement components below this p_sum are dropped")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 0.5));
   evaluate->add_flag("--baseline", options->baseline,
                      "also run the single-view PPF baseline (PCL) on the random planner's views");
   evaluate->add_flag("--no-noise", options->no_noise, "render the views without sensor noise");

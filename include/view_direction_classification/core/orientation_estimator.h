@@ -19,9 +19,11 @@ namespace vdc {
 // Online settings of the estimator (config/estimator.yaml). Feature settings are not here: they
 // come from the model bundle, so online features match the training ones.
 struct EstimatorParameters {
-  int n_feat = 0;            // most certain features summed per view; <= 0: the bundle's value
-  double kappa = 0.0;        // girdle concentration; <= 0: defaultViewConcentration(view spacing)
-  int max_components = 200;  // K_max of the belief
+  int n_feat = 0;      // most certain features summed per view; <= 0: the bundle's value
+  double kappa = 0.0;  // girdle concentration; <= 0: defaultViewConcentration(view spacing)
+  // K_max of the belief. METHOD.md starts at 200; on the evaluation (10 x 12 views, all and
+  // r_vis 5 cm) 50 gives the same median errors at a quarter of the fusion time.
+  int max_components = 50;
   int min_features = 10;     // a view with fewer features is skipped (no update)
   double min_weight = 1e-3;  // measurement components below this p_sum are dropped
   SegmentationParameters segmentation;
