@@ -58,6 +58,9 @@ EstimatorRosParameters readEstimatorRosParameters(const ros::NodeHandle& node) {
   require(p.object_frame != p.fixed_frame, "object_frame", "different from ~fixed_frame",
           p.object_frame);
   p.publish_tf = read(node, "publish_tf", p.publish_tf);
+  p.tf_rate = read(node, "tf_rate", p.tf_rate);
+  require(std::isfinite(p.tf_rate) && p.tf_rate >= 0.0, "tf_rate",
+          "a finite number >= 0 (0: only on each estimate)", p.tf_rate);
   p.tf_timeout = read(node, "tf_timeout", p.tf_timeout);
   require(std::isfinite(p.tf_timeout) && p.tf_timeout >= 0.0, "tf_timeout", "a finite number >= 0",
           p.tf_timeout);

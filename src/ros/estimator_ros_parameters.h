@@ -17,6 +17,9 @@ struct EstimatorRosParameters {
   std::string object_id = "object";     // copied into every estimate
   std::string object_frame = "object";  // tf child frame broadcast when publish_tf
   bool publish_tf = true;
+  // [Hz] re-broadcast of the latest object tf with fresh stamps (/tf is not latched: rviz or a
+  // listener started after an estimate would never learn the frame); 0 = only on each estimate.
+  double tf_rate = 10.0;
   double tf_timeout = 0.2;            // [s] wait for the camera pose at the cloud's stamp
   int max_points = 500000;            // larger clouds are skipped (latency guard)
   double position_variance = 0.0025;  // [m^2] per axis in ~pose's covariance

@@ -64,6 +64,11 @@ OrientationEstimatorRos::OrientationEstimatorRos(ros::NodeHandle node, ros::Node
   diagnostics_.add("orientation estimate", this, &OrientationEstimatorRos::diagnose);
   diagnostics_timer_ = private_node_.createTimer(
       ros::Duration(1.0), [this](const ros::TimerEvent&) { diagnostics_.update(); });
+  if (parameters_.publish_tf && parameters_.tf_rate > 0.0) {
+    object_transform_timer_ =
+        private_node_.createTimer(ros::Duration(1.0 / parameters_.tf_rate),
+                                  [this](const ros::TimerEvent&) { rebroadcastObjectTransform(); });
+  }
 
   worker_ = std::thread(&OrientationEstimatorRos::workerLoop, this);
   // Queue of one: the worker only ever wants the newest cloud.
@@ -75,6 +80,7 @@ OrientationEstimatorRos::OrientationEstimatorRos(ros::NodeHandle node, ros::Node
 }
 
 OrientationEstimatorRos::~OrientationEstimatorRos() {
+  object_transform_timer_.stop();
   cloud_subscriber_.shutdown();
   {
     std::lock_guard<std::mutex> lock(pending_mutex_);
@@ -230,7 +236,21 @@ void OrientationEstimatorRos::publishEstimate(const std_msgs::Header& cloud_head
     transform.transform.translation.z = position->z();
     transform.transform.rotation = toQuaternionMsg(map);
     tf_broadcaster_.sendTransform(transform);
+    std::lock_guard<std::mutex> transform_lock(object_transform_mutex_);
+    object_transform_ = transform;
   }
+}
+
+void OrientationEstimatorRos::rebroadcastObjectTransform() {
+  std::optional<geometry_msgs::TransformStamped> transform;
+  {
+    std::lock_guard<std::mutex> lock(object_transform_mutex_);
+    transform = object_transform_;
+  }
+  if (!transform) return;
+  // The object is static in the fixed frame: the latest estimate holds now.
+  transform->header.stamp = ros::Time::now();
+  tf_broadcaster_.sendTransform(*transform);
 }
 
 void OrientationEstimatorRos::skip(const std::string& reason) {
@@ -255,6 +275,12 @@ bool OrientationEstimatorRos::resetService(std_srvs::Trigger::Request&,
 // Called with estimator_mutex_ held.
 void OrientationEstimatorRos::resetBelief(const std::string& why) {
   estimator_->reset();
+  {
+    // No object pose until the next estimate: listeners see the frame go stale, not a pose the
+    // uniform belief no longer supports.
+    std::lock_guard<std::mutex> lock(object_transform_mutex_);
+    object_transform_.reset();
+  }
   ROS_INFO("%s: belief reset: %s", private_node_.getNamespace().c_str(), why.c_str());
   std_msgs::Header header;
   header.stamp = ros::Time::now();

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <diagnostic_updater/diagnostic_updater.h>
+#include <geometry_msgs/TransformStamped.h>
 #include <ros/ros.h>
 #include <sensor_msgs/PointCloud2.h>
 #include <std_srvs/Trigger.h>
@@ -12,6 +13,7 @@
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 
@@ -22,8 +24,9 @@ namespace vdc {
 
 // The orientation_estimator's ROS side (ARCHITECTURE.md, "Nodes"): reads the parameters, loads
 // the model, subscribes `cloud`, looks up the camera pose with tf2, calls the core
-// OrientationEstimator and publishes ~estimate, ~pose, ~markers and the object's tf; serves
-// ~reset and reports diagnostics. The same class runs in the node binary and in the nodelet.
+// OrientationEstimator and publishes ~estimate, ~pose, ~markers and the object's tf (re-sent at
+// ~tf_rate); serves ~reset and reports diagnostics. The same class runs in the node binary and in
+// the nodelet.
 //
 // A camera can be faster than the estimator: the subscriber callback only keeps the newest
 // cloud, and one worker thread processes whatever is newest when it is free (the clouds it never
@@ -44,6 +47,7 @@ class OrientationEstimatorRos {
   void workerLoop();
   void processCloud(const sensor_msgs::PointCloud2& cloud);
   void publishEstimate(const std_msgs::Header& cloud_header);
+  void rebroadcastObjectTransform();
   void skip(const std::string& reason);
   bool resetService(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
   void resetBelief(const std::string& why);
@@ -60,6 +64,13 @@ class OrientationEstimatorRos {
   tf2_ros::Buffer tf_buffer_;
   tf2_ros::TransformListener tf_listener_;
   tf2_ros::TransformBroadcaster tf_broadcaster_;
+  // The latest estimate's fixed_frame -> object_frame transform, re-sent with the current time
+  // at ~tf_rate (as robot_state_publisher does for fixed joints): /tf is not latched, so rviz or
+  // a listener started after the last estimate would otherwise never learn the object frame.
+  // Empty before the first estimate and after ~reset. The worker writes it, the timer reads it.
+  std::mutex object_transform_mutex_;
+  std::optional<geometry_msgs::TransformStamped> object_transform_;
+  ros::Timer object_transform_timer_;
   ros::Publisher estimate_publisher_, pose_publisher_, markers_publisher_;
   ros::ServiceServer reset_server_;
   ros::Subscriber cloud_subscriber_;

@@ -3,6 +3,10 @@
 
 #include <gtest/gtest.h>
 #include <ros/ros.h>
+#include <std_srvs/Trigger.h>
+#include <tf2/exceptions.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
 
 #include <cmath>
 #include <random>
@@ -69,6 +73,55 @@ TEST(EstimatorConvergence,
   }
   EXPECT_LT(error, kBoundDeg);
   EXPECT_LT(entropy, first_entropy - kMinEntropyDrop);
+}
+
+// /tf is not latched: a listener that starts after an estimate knows the object frame only
+// because the estimator re-sends it at ~tf_rate (10 Hz in config/estimator.yaml), with fresh
+// stamps; after ~reset it must stop.
+TEST(EstimatorConvergence, ObjectFrameReachesAListenerStartedAfterTheEstimateUntilReset) {
+  ros::NodeHandle node;
+  const std::string mesh = meshPath();
+  ASSERT_FALSE(mesh.empty()) << "the test needs the private parameter ~mesh";
+  Eigen::Isometry3d world_from_object = Eigen::Isometry3d::Identity();
+  world_from_object.translation() = Eigen::Vector3d(0.2, 0.1, 0.0);
+  MugViewPublisher views(node, mesh, world_from_object);
+  EstimateRecorder estimates(node, "orientation_estimator/estimate");
+  ASSERT_TRUE(views.waitUntilConnected(30.0)) << "the estimator never subscribed";
+  ASSERT_TRUE(estimates.waitUntilConnected(30.0)) << "the estimator never published";
+
+  const ros::Time stamp = ros::Time::now();
+  views.publishView(Eigen::Vector3d(1.0, 0.5, 0.3), 0.6, 0.2, stamp, 7);
+  const auto estimate = estimates.waitFor(stamp, 60.0);
+  ASSERT_TRUE(estimate) << "no estimate for the view";
+  ros::WallDuration(0.5).sleep();  // the one-off broadcast is over before the listener starts
+
+  {
+    tf2_ros::Buffer late_buffer;
+    tf2_ros::TransformListener late_listener(late_buffer, node);
+    geometry_msgs::TransformStamped transform;
+    try {
+      transform =
+          late_buffer.lookupTransform(kFixedFrame, "object", ros::Time(0), ros::Duration(5.0));
+    } catch (const tf2::TransformException& error) {
+      FAIL() << "a listener started after the estimate never learnt the object frame: "
+             << error.what();
+    }
+    EXPECT_GT(transform.header.stamp, stamp) << "not re-sent with a fresh stamp";
+    // The re-sent pose is the estimate's: the same MAP orientation (up to the quaternion sign).
+    const auto& q = estimate->map_orientation;
+    const auto& r = transform.transform.rotation;
+    EXPECT_NEAR(std::abs(q.w * r.w + q.x * r.x + q.y * r.y + q.z * r.z), 1.0, 1e-6);
+  }
+
+  std_srvs::Trigger trigger;
+  ASSERT_TRUE(ros::service::call("orientation_estimator/reset", trigger));
+  ros::WallDuration(0.5).sleep();  // a re-broadcast already in flight arrives before the listener
+  tf2_ros::Buffer buffer_after_reset;
+  tf2_ros::TransformListener listener_after_reset(buffer_after_reset, node);
+  // Ten re-broadcast periods.
+  EXPECT_FALSE(
+      buffer_after_reset.canTransform(kFixedFrame, "object", ros::Time(0), ros::Duration(1.0)))
+      << "the object frame is still broadcast after ~reset";
 }
 
 }  // namespace

@@ -53,6 +53,11 @@ class EstimatorStartup(unittest.TestCase):
         self.assertEqual(code, 1, output)
         self.assertIn("~tf_timeout", output)
 
+    def test_negative_tf_rate_is_refused_naming_the_parameter(self):
+        code, output = run_estimator("_model:=/nonexistent.h5", "_tf_rate:=-1.0")
+        self.assertEqual(code, 1, output)
+        self.assertIn("~tf_rate", output)
+
     def test_unknown_segmentation_mode_is_refused(self):
         code, output = run_estimator("_model:=/nonexistent.h5", "_segmentation:=magic")
         self.assertEqual(code, 1, output)
