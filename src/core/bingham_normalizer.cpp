@@ -161,10 +161,14 @@ BinghamNormalizer integrate(const Eigen::Vector3d& z, bool with_gradient) {
   // The integrand is log-convex in t (a product of Laplace transforms), so it peaks only at
   // t = 0 or t = 1, in layers as thin as 1 / |z|. Seed the adaptive subdivision with breakpoints
   // that grow geometrically away from both ends so no layer can be missed by the first rule.
-  const double largest = z.cwiseAbs().maxCoeff();
+  // Near t = 1 the integrand varies on the scale 1 / max(|z1|, |z2|), near t = 0 on 1 / |z3|.
+  const double scale_at_one = std::max(std::abs(z(0)), std::abs(z(1)));
+  const double scale_at_zero = std::abs(z(2));
   std::vector<double> breakpoints{0.0, 0.5, 1.0};
-  for (double width = 1.0 / std::max(largest, 1.0); width < 0.5; width *= 4.0) {
+  for (double width = 1.0 / std::max(scale_at_zero, 1.0); width < 0.5; width *= 4.0) {
     breakpoints.push_back(width);
+  }
+  for (double width = 1.0 / std::max(scale_at_one, 1.0); width < 0.5; width *= 4.0) {
     breakpoints.push_back(1.0 - width);
   }
   std::sort(breakpoints.begin(), breakpoints.end());
