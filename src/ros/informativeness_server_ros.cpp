@@ -99,10 +99,14 @@ InformativenessServerRos::InformativenessServerRos(ros::NodeHandle node,
   occluder_radius_ = private_node_.param("occluder_radius", 0.005);
   belief_samples_ = private_node_.param("belief_samples_per_component", 8);
   tf_timeout_ = private_node_.param("tf_timeout", 0.2);
+  const double republish_period = private_node_.param("republish_period", 1.0);
   if (fixed_frame_.empty() || object_frame_.empty()) {
     throw Error("Parameters fixed_frame and object_frame must not be empty.");
   }
   if (label_best_ < 0) throw Error("Parameter label_best must be >= 0.");
+  if (!(std::isfinite(republish_period) && republish_period >= 0.0)) {
+    throw Error("Parameter republish_period must be a finite number >= 0 (0: latched once).");
+  }
   if (!(view_marker_distance_ > 0.0) || !(occluder_radius_ > 0.0) || !(tf_timeout_ >= 0.0) ||
       belief_samples_ < 0) {
     throw Error(
@@ -116,6 +120,17 @@ InformativenessServerRos::InformativenessServerRos(ros::NodeHandle node,
   view_scores_publisher_ =
       private_node_.advertise<visualization_msgs::MarkerArray>("view_scores", 1, true);
   publishLatchedTopics();
+  if (republish_period > 0.0) {
+    // Latching alone is not enough for rviz: tf2 drops a stamp-0 message that arrives before its
+    // frame exists, for good, as soon as the frame appears (BufferCore::testTransformableRequests
+    // judges time 0 older than the cache). The object frame only exists after the first
+    // estimate, so a viewer gets the heatmap within one period of learning the frame.
+    republish_timer_ = private_node_.createWallTimer(
+        ros::WallDuration(republish_period), [this](const ros::WallTimerEvent&) {
+          heatmap_publisher_.publish(heatmap_msg_);
+          view_scores_publisher_.publish(view_scores_msg_);
+        });
+  }
   heatmap_service_ =
       private_node_.advertiseService("get_heatmap", &InformativenessServerRos::getHeatmap, this);
   next_best_view_service_ = private_node_.advertiseService(
@@ -129,7 +144,8 @@ InformativenessServerRos::InformativenessServerRos(ros::NodeHandle node,
 
 void InformativenessServerRos::publishLatchedTopics() {
   const Eigen::VectorXf& g = model_->global_scores;
-  heatmap_publisher_.publish(colouredSurface(*model_, g, medianOfValid(g), object_frame_));
+  heatmap_msg_ = colouredSurface(*model_, g, medianOfValid(g), object_frame_);
+  heatmap_publisher_.publish(heatmap_msg_);
 
   // One sphere per training direction on a sphere around the object, coloured by its view score
   // on the same scale (white = most informative), and text labels on the best ones.
@@ -168,7 +184,8 @@ void InformativenessServerRos::publishLatchedTopics() {
         Eigen::Vector3d((view_marker_distance_ + 0.02) * model_->view_directions[m].normalized()));
     markers.markers.push_back(label);
   }
-  view_scores_publisher_.publish(markers);
+  view_scores_msg_ = markers;
+  view_scores_publisher_.publish(view_scores_msg_);
 }
 
 void InformativenessServerRos::receiveEstimate(

@@ -1,11 +1,13 @@
 #pragma once
 
 #include <ros/ros.h>
+#include <sensor_msgs/PointCloud2.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 #include <view_direction_classification/BinghamMixture.h>
 #include <view_direction_classification/GetHeatmap.h>
 #include <view_direction_classification/GetNextBestView.h>
+#include <visualization_msgs/MarkerArray.h>
 
 #include <Eigen/Geometry>
 
@@ -22,10 +24,10 @@ namespace vdc {
 
 // The informativeness server node (ARCHITECTURE.md, "Nodes"): serves a model bundle's view and
 // surface informativeness. Latched `~heatmap` (the surface set coloured by the global score) and
-// `~view_scores` (the training directions coloured by their view score), services
-// `~get_heatmap` and `~next_best_view`; tracks the belief published on `estimate`. Parameters
-// are documented in config/informativeness_server.yaml. Every bad request is answered with
-// success = false and a message; the server keeps serving.
+// `~view_scores` (the training directions coloured by their view score), re-sent every
+// republish_period; services `~get_heatmap` and `~next_best_view`; tracks the belief published on
+// `estimate`. Parameters are documented in config/informativeness_server.yaml. Every bad request is
+// answered with success = false and a message; the server keeps serving.
 class InformativenessServerRos {
  public:
   // Throws vdc::Error for a missing or invalid model bundle or invalid parameters.
@@ -63,6 +65,10 @@ class InformativenessServerRos {
   tf2_ros::Buffer tf_buffer_;
   tf2_ros::TransformListener tf_listener_;
   ros::Publisher heatmap_publisher_, view_scores_publisher_;
+  // What ~heatmap and ~view_scores carry (fixed after start-up), re-sent every republish_period.
+  sensor_msgs::PointCloud2 heatmap_msg_;
+  visualization_msgs::MarkerArray view_scores_msg_;
+  ros::WallTimer republish_timer_;
   ros::ServiceServer heatmap_service_, next_best_view_service_;
   ros::Subscriber estimate_subscriber_;
 };

@@ -1,8 +1,10 @@
 #!/usr/bin/python3
 """rostest: the informativeness server refuses every bad request with a message and keeps
-serving; its latched topics carry the model's surface set and training directions."""
+serving; its latched (and periodically re-sent) topics carry the model's surface set and
+training directions."""
 import math
 import struct
+import time
 import unittest
 
 import geometry_msgs.msg
@@ -88,6 +90,21 @@ class ServerBadRequests(unittest.TestCase):
         labels = [m for m in markers.markers if m.ns == "best_views"]
         self.assertEqual(len(spheres), 12)  # the quick model's 12 directions
         self.assertEqual(len(labels), 3)
+
+    def test_heatmap_and_view_scores_are_re_sent_every_republish_period(self):
+        # config/informativeness_server.yaml: republish_period 1.0 s. A subscriber gets the
+        # latched copy at once, then fresh copies: rviz drops a stamp-0 message that arrived
+        # before the object frame existed, so only a later copy can be drawn.
+        for topic, message_type in ((SERVER + "/heatmap", sensor_msgs.msg.PointCloud2),
+                                    (SERVER + "/view_scores", visualization_msgs.msg.MarkerArray)):
+            arrivals = []
+            subscriber = rospy.Subscriber(topic, message_type,
+                                          lambda _, log=arrivals: log.append(time.monotonic()))
+            deadline = time.monotonic() + 10.0
+            while len(arrivals) < 3 and time.monotonic() < deadline:
+                time.sleep(0.05)
+            subscriber.unregister()
+            self.assertGreaterEqual(len(arrivals), 3, topic + " was not re-sent")
 
     def test_heatmap_refuses_unknown_view_index_zero_or_nan_direction_and_bad_scaling(self):
         r = GetHeatmapRequest
