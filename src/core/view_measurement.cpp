@@ -57,7 +57,7 @@ double defaultViewConcentration(double neighbour_spacing) {
             << neighbour_spacing << ".";
     throw Error(message.str());
   }
-  return std::log(2.0) / std::pow(std::sin(neighbour_spacing / 4.0), 2);
+  return std::log(2.0) / (2.0 * std::pow(std::sin(neighbour_spacing / 4.0), 2));
 }
 
 BinghamMixture viewMeasurement(const Eigen::VectorXd& p_sum,

@@ -32,7 +32,7 @@ TEST(ViewMeasurement, EveryOrientationOnTheGirdleCircleShowsTheSameDirection) {
   }
 }
 
-TEST(ViewMeasurement, DefaultKappaPutsHalfHeightAtHalfTheSpacing) {
+TEST(ViewMeasurement, DefaultKappaKeepsOneOverRootTwoOfThePeakAtHalfTheSpacing) {
   const double spacing = 30.0 * M_PI / 180.0;
   const double kappa = defaultViewConcentration(spacing);
   const Eigen::Vector3d d(0, 0, 1);
@@ -40,7 +40,7 @@ TEST(ViewMeasurement, DefaultKappaPutsHalfHeightAtHalfTheSpacing) {
   // Tilt the object by half the spacing about an axis perpendicular to the optical axis.
   const Eigen::Vector4d tilted = quaternionMultiply(
       quaternionFromAxisAngle(Eigen::Vector3d(1, 0, 0), spacing / 2), girdle.mode());
-  EXPECT_NEAR(girdle.density(tilted) / girdle.density(girdle.mode()), 0.5, 1e-12);
+  EXPECT_NEAR(girdle.density(tilted) / girdle.density(girdle.mode()), std::sqrt(0.5), 1e-12);
   EXPECT_THROW(defaultViewConcentration(0.0), Error);
   EXPECT_THROW(defaultViewConcentration(NAN), Error);
 }
