@@ -37,7 +37,9 @@ RgbImage renderSplats(const std::vector<Eigen::Vector3f>& points,
   radius = std::max(radius, 1e-6);
   const double scale = 0.45 * view.size / radius;  // pixels per metre, 10 % margin
   const double half = 0.5 * view.size;
-  const double disc = std::max(1.5, 0.75 * view.point_spacing * scale);
+  // Stratified samples leave gaps of up to ~1.5 spacings; discs of one spacing radius close them
+  // without blurring the 5 mm score neighbourhoods.
+  const double disc = std::max(1.5, 1.0 * view.point_spacing * scale);
   const int reach = static_cast<int>(std::ceil(disc));
 
   std::vector<double> depth(static_cast<std::size_t>(view.size) * view.size,

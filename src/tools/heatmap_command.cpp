@@ -68,11 +68,11 @@ void runHeatmap(const HeatmapOptions& options) {
                                                           {"z", Eigen::Vector3d::UnitZ()}};
   for (const auto& [axis, direction] : axes) {
     draw(g, g_median, direction, std::string("global_median_") + axis,
-         std::string("global score, seen from +") + axis, "global score (black = median)");
+         std::string("global score, seen from +") + axis, "global score\n(black = median)");
   }
   for (const auto& [axis, direction] : axes) {
     draw(g, g_max, direction, std::string("global_max_") + axis,
-         std::string("global score, seen from +") + axis, "global score (black = maximum)");
+         std::string("global score, seen from +") + axis, "global score\n(black = maximum)");
   }
 
   // View-conditional scores (paper figure 2): columns of K for the best and worst ranked views,
@@ -91,13 +91,13 @@ void runHeatmap(const HeatmapOptions& options) {
                     ranking.size(), bundle.view_informativeness.view_scores(m));
       draw(K.col(m), k_median, bundle.view_directions[static_cast<std::size_t>(m)],
            (best ? "view_best_" : "view_worst_") + std::to_string(r + 1), title,
-           best ? "most informative views (black = median of K)"
-                : "least informative views (black = median of K)");
+           best ? "most informative views\n(black = median of K)"
+                : "least informative views\n(black = median of K)");
     }
   }
 
   const Rgb invalid = heatmapColour(-1.0, 1.0);
-  const nlohmann::json manifest = {{"model", options.model_path},
+  const nlohmann::json manifest = {{"model", fs::path(options.model_path).filename().string()},
                                    {"mean_global_score", g.size() ? g.cwiseMax(0.0f).mean() : 0.0f},
                                    {"unobservable_colour", {invalid[0], invalid[1], invalid[2]}},
                                    {"panels", panels}};
