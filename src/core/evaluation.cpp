@@ -224,6 +224,16 @@ pcl::PointCloud<pcl::PointXYZ> renderEvaluationView(const DepthRenderer& rendere
   return cropToAnchors(cloud, camera_from_object, anchors, radius);
 }
 
+std::optional<int> viewsUntilMedianStaysBelow(const Eigen::VectorXd& median_per_view,
+                                              double threshold_deg) {
+  std::optional<int> first;
+  for (Eigen::Index v = median_per_view.size() - 1; v >= 0 && median_per_view(v) < threshold_deg;
+       --v) {
+    first = static_cast<int>(v) + 1;
+  }
+  return first;
+}
+
 Eigen::VectorXd SettingErrors::medianPerView() const {
   Eigen::VectorXd medians(errors_deg.cols());
   for (Eigen::Index v = 0; v < errors_deg.cols(); ++v) {

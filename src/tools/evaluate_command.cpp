@@ -82,6 +82,10 @@ std::vector<Eigen::Vector3d> parseAnchors(const std::string& text) {
   return anchors;
 }
 
+// The planner question: after how many views the median error gets under 5 degrees and
+// stays there for the rest of the sequence (a dip that comes back up does not count).
+constexpr double kConvergedDeg = 5.0;
+
 nlohmann::json settingSummary(const SettingErrors& setting, int views) {
   const Eigen::VectorXd medians = setting.medianPerView();
   nlohmann::json after = nlohmann::json::object();
@@ -89,12 +93,14 @@ nlohmann::json settingSummary(const SettingErrors& setting, int views) {
     if (v <= views) after[std::to_string(v)] = medians(v - 1);
   }
   after[std::to_string(views)] = medians(views - 1);  // and after the last view
+  const std::optional<int> converged = viewsUntilMedianStaysBelow(medians, kConvergedDeg);
   return {
       {"visibility", visibilityLabel(setting.radius)},
       {"visible_fraction", setting.visible_fraction},
       {"skipped_views", setting.skipped_views},
       {"median_error_deg", std::vector<double>(medians.data(), medians.data() + medians.size())},
-      {"median_error_after_views", after}};
+      {"median_error_after_views", after},
+      {"views_until_median_below_5deg", converged ? nlohmann::json(*converged) : nlohmann::json()}};
 }
 
 // The baseline judges each view alone: one median over all its views per setting.
@@ -250,7 +256,12 @@ void runEvaluate(EvaluateOptions options, const CLI::App& command) {
       if (last != 1 && last != 5 && last != 10 && last != 20) {
         std::printf("  %2d: %6.1f", last, medians(last - 1));
       }
-      std::printf(" deg\n");
+      const std::optional<int> converged = viewsUntilMedianStaysBelow(medians, kConvergedDeg);
+      if (converged) {
+        std::printf(" deg; < %.0f deg from view %d on\n", kConvergedDeg, *converged);
+      } else {
+        std::printf(" deg; never < %.0f deg to the end\n", kConvergedDeg);
+      }
     }
   }
   if (baseline) {

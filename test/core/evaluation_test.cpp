@@ -175,6 +175,15 @@ TEST(EvaluationTest, SingleViewMethodReturningTheTrueRotationScoresZero) {
   EXPECT_EQ(result.settings[0].skipped_views, 0);
 }
 
+TEST(EvaluationTest, ViewsUntilTheMedianStaysBelowAThresholdIgnoreDipsThatComeBack) {
+  Eigen::VectorXd medians(6);
+  medians << 90, 4, 12, 6, 4.5, 3;  // the dip at view 2 comes back up
+  EXPECT_EQ(viewsUntilMedianStaysBelow(medians, 5.0), std::optional<int>(5));
+  EXPECT_EQ(viewsUntilMedianStaysBelow(medians, 100.0), std::optional<int>(1));
+  EXPECT_EQ(viewsUntilMedianStaysBelow(medians, 3.0), std::nullopt);  // strictly below
+  EXPECT_EQ(viewsUntilMedianStaysBelow(Eigen::VectorXd(), 5.0), std::nullopt);
+}
+
 TEST(EvaluationTest, VisibilityLabelsRoundTripAndBadOnesAreRefused) {
   EXPECT_EQ(visibilityLabel(kAllVisible), "all");
   EXPECT_EQ(visibilityLabel(0.08), "0.08");

@@ -96,6 +96,12 @@ struct SettingErrors {
   Eigen::VectorXd medianPerView() const;
 };
 
+// The number of views after which the median error (medianPerView) falls under `threshold_deg`
+// and stays under it to the end of the sequence (a dip that comes back up does not count);
+// nullopt if the last view's median is not under it.
+std::optional<int> viewsUntilMedianStaysBelow(const Eigen::VectorXd& median_per_view,
+                                              double threshold_deg);
+
 struct EvaluationResult {
   std::string planner;  // "random", ..., or the single-view method's name
   std::vector<SettingErrors> settings;
