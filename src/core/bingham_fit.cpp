@@ -8,6 +8,7 @@
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 
@@ -23,7 +24,8 @@ Eigen::Vector3d axisMoments(const Eigen::Vector3d& z) {
 // Solves E_z[x_i^2] = s_i for z <= 0 by projected Newton ascent on the concave log-likelihood
 // L(z) = z . s - log F(z), whose Hessian is minus the covariance of (x_1^2, x_2^2, x_3^2); that
 // Hessian is taken by finite differences of the exact gradient.
-Eigen::Vector3d solveMomentEquations(const Eigen::Vector3d& s) {
+Eigen::Vector3d solveMomentEquations(const Eigen::Vector3d& s,
+                                     const std::optional<Eigen::Vector3d>& initial) {
   const auto log_likelihood = [&](const Eigen::Vector3d& z) {
     return z.dot(s) - std::log(binghamNormalizer(z));
   };
@@ -32,6 +34,17 @@ Eigen::Vector3d solveMomentEquations(const Eigen::Vector3d& s) {
   Eigen::Vector3d z;
   for (int i = 0; i < 3; ++i) z(i) = std::min(0.0, 2.0 - 1.0 / (2.0 * s(i)));
   double value = log_likelihood(z);
+  if (initial && initial->allFinite()) {
+    // Both sorted ascending: the smallest moment pairs with the most negative concentration.
+    Eigen::Vector3d guess = initial->cwiseMin(0.0).cwiseMax(-kMaxFittedConcentration);
+    std::sort(guess.data(), guess.data() + 3);
+    std::array<int, 3> order{0, 1, 2};
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return s(a) < s(b); });
+    Eigen::Vector3d start;
+    for (int i = 0; i < 3; ++i) start(order[i]) = guess(i);
+    const double start_value = log_likelihood(start);
+    if (start_value > value) z = start, value = start_value;
+  }
   for (int iteration = 0; iteration < 200; ++iteration) {
     const Eigen::Vector3d moments = axisMoments(z);
     const Eigen::Vector3d gradient = s - moments;
@@ -75,7 +88,8 @@ Eigen::Vector3d solveMomentEquations(const Eigen::Vector3d& s) {
 
 }  // namespace
 
-BinghamDistribution fitBinghamToScatter(const Eigen::Matrix4d& scatter) {
+BinghamDistribution fitBinghamToScatter(const Eigen::Matrix4d& scatter,
+                                        const std::optional<Eigen::Vector3d>& initial) {
   if (!scatter.allFinite()) throw Error("A scatter matrix to fit a Bingham to must be finite.");
   const double scale = scatter.cwiseAbs().maxCoeff();
   if (scale == 0.0 || (scatter - scatter.transpose()).cwiseAbs().maxCoeff() > 1e-9 * scale) {
@@ -94,7 +108,7 @@ BinghamDistribution fitBinghamToScatter(const Eigen::Matrix4d& scatter) {
   // Moments below the floor would need concentrations beyond kMaxFittedConcentration.
   const double floor = 1.0 / (2.0 * kMaxFittedConcentration);
   const Eigen::Vector3d moments = eigenvalues.head<3>().cwiseMax(floor);
-  const Eigen::Vector3d concentrations = solveMomentEquations(moments);
+  const Eigen::Vector3d concentrations = solveMomentEquations(moments, initial);
   return BinghamDistribution(concentrations, solver.eigenvectors().leftCols<3>());
 }
 

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <numeric>
 #include <sstream>
@@ -292,21 +293,36 @@ BinghamMixture reduce(const BinghamMixture& mixture, const MixtureReductionOptio
   if (by_weight.size() > static_cast<std::size_t>(options.max_components)) {
     by_weight.resize(options.max_components);
   }
-  std::vector<double> weights;
-  std::vector<BinghamDistribution> components;
-  for (std::size_t c : by_weight) {
-    const Cluster& cluster = clusters[c];
-    if (cluster.members.size() == 1) {
-      components.push_back(mixture.component(cluster.members.front()));
-    } else {
-      Eigen::Matrix4d scatter = Eigen::Matrix4d::Zero();
-      for (std::size_t k : cluster.members) {
-        scatter += mixture.weight(k) * mixture.component(k).scatterMatrix();
+  // Moment matching per cluster: the members' scatter matrices (one normaliser gradient each)
+  // and the refit dominate a filter update, so clusters run in parallel and each refit starts
+  // from its heaviest member's concentrations (members passed the merge tests: nearly equal).
+  std::vector<double> weights(by_weight.size());
+  std::vector<BinghamDistribution> components(by_weight.size());
+  const auto cluster_count = static_cast<std::ptrdiff_t>(by_weight.size());
+  std::exception_ptr failure;  // an exception must not leave an OpenMP region
+#pragma omp parallel for schedule(dynamic, 1)
+  for (std::ptrdiff_t n = 0; n < cluster_count; ++n) {
+    try {
+      const std::size_t c = by_weight[static_cast<std::size_t>(n)];
+      const Cluster& cluster = clusters[c];
+      const BinghamDistribution& leader = mixture.component(cluster.members.front());
+      if (cluster.members.size() == 1) {
+        components[static_cast<std::size_t>(n)] = leader;
+      } else {
+        Eigen::Matrix4d scatter = Eigen::Matrix4d::Zero();
+        for (std::size_t k : cluster.members) {
+          scatter += mixture.weight(k) * mixture.component(k).scatterMatrix();
+        }
+        components[static_cast<std::size_t>(n)] =
+            fitBinghamToScatter(scatter / cluster_weights[c], leader.concentrations());
       }
-      components.push_back(fitBinghamToScatter(scatter / cluster_weights[c]));
+      weights[static_cast<std::size_t>(n)] = cluster_weights[c];
+    } catch (...) {
+#pragma omp critical(vdc_reduce_failure)
+      if (!failure) failure = std::current_exception();
     }
-    weights.push_back(cluster_weights[c]);
   }
+  if (failure) std::rethrow_exception(failure);
   return BinghamMixture(std::move(weights), std::move(components));
 }
 

@@ -46,6 +46,7 @@ Eigen::Vector4d rotationBetween(const Eigen::Vector3d& from, const Eigen::Vector
 OrientationFilterOptions filterOptionsOf(const EstimatorParameters& parameters) {
   OrientationFilterOptions options;
   options.reduction.max_components = parameters.max_components;
+  options.reduction.relative_weight_threshold = parameters.belief_weight_floor;
   // The belief's entropy is published with every estimate: 1000 draws keep it at a few ms with
   // a standard error of a few hundredths of a nat.
   options.entropy_samples = 1000;
@@ -61,6 +62,10 @@ void checkParameters(const EstimatorParameters& p) {
   }
   if (!(p.min_weight >= 0.0 && p.min_weight < 1.0)) {
     throw Error("min_weight must lie in [0, 1), got " + std::to_string(p.min_weight));
+  }
+  if (!(p.belief_weight_floor >= 0.0 && p.belief_weight_floor < 1.0)) {
+    throw Error("belief_weight_floor must lie in [0, 1), got " +
+                std::to_string(p.belief_weight_floor));
   }
   if (!std::isfinite(p.kappa)) throw Error("kappa must be finite");
   checkSegmentationParameters(p.segmentation);

@@ -225,7 +225,8 @@ void runEvaluate(EvaluateOptions options, const CLI::App& command) {
        {{"n_feat", settings.estimator.n_feat},
         {"kappa", settings.estimator.kappa},
         {"max_components", settings.estimator.max_components},
-        {"min_weight", settings.estimator.min_weight}}},
+        {"min_weight", settings.estimator.min_weight},
+        {"belief_weight_floor", settings.estimator.belief_weight_floor}}},
       {"seconds_total", total_seconds},
       {"planners", planner_summaries},
       {"baseline",
@@ -360,6 +361,11 @@ void addEvaluateCommand(CLI::App& app) {
   evaluate
       ->add_option("--min-weight", s.estimator.min_weight,
                    "measurement components below this p_sum are dropped")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 0.5));
+  evaluate
+      ->add_option("--belief-weight-floor", s.estimator.belief_weight_floor,
+                   "belief components below this fraction of the heaviest are dropped")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 0.5));
   evaluate->add_flag("--baseline", options->baseline,

@@ -26,6 +26,10 @@ struct EstimatorParameters {
   int max_components = 50;
   int min_features = 10;     // a view with fewer features is skipped (no update)
   double min_weight = 1e-3;  // measurement components below this p_sum are dropped
+  // Belief components lighter than this fraction of the heaviest are dropped after each fusion
+  // (and their products never computed): METHOD.md's 1e-6. 1e-3 gave the same median errors on
+  // the evaluation but no faster updates in the estimator benchmark (fewer merges, more refits).
+  double belief_weight_floor = 1e-6;
   SegmentationParameters segmentation;
 };
 
