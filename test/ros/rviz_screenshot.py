@@ -50,7 +50,7 @@ def heatmap_pixel_count(rgb):
     # (about 12 x 12 pixels) must not widen the box.
     rows = np.flatnonzero(background.sum(axis=1) >= 100)
     cols = np.flatnonzero(background.sum(axis=0) >= 100)
-    if rows.size == 0:
+    if rows.size == 0 or cols.size == 0:  # rviz not drawn (yet): no 3D view on screen
         return 0, 0
     view = rgb[rows[0]:rows[-1] + 1, cols[0]:cols[-1] + 1].astype(int)
     grey = (view.max(axis=2) - view.min(axis=2)) <= GREY_SPREAD
