@@ -189,6 +189,12 @@ View viewWithPoints(const vdc::ModelBundle& model, double target) {
   return view;
 }
 
+// The cloud sizes of both size benchmarks, timed alike: wall time and the process's CPU time.
+void cloudSizeCases(benchmark::internal::Benchmark* cases) {
+  for (const int points : {1000, 10000, 100000, 300000}) cases->Arg(points);
+  cases->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+}
+
 // (b) Features + classification only (what the cloud's size changes), at ~state.range(0) object
 // points.
 void BM_FeaturesAndClassificationByCloudSize(benchmark::State& state) {
@@ -216,14 +222,7 @@ void BM_FeaturesAndClassificationByCloudSize(benchmark::State& state) {
   state.counters["points"] = static_cast<double>(vdc::countValidPoints(view.cloud));
   state.counters["peak_MiB"] = peakResidentMiB();
 }
-BENCHMARK(BM_FeaturesAndClassificationByCloudSize)
-    ->Arg(1000)
-    ->Arg(10000)
-    ->Arg(100000)
-    ->Arg(300000)
-    ->Unit(benchmark::kMillisecond)
-    ->MeasureProcessCPUTime()
-    ->UseRealTime();
+BENCHMARK(BM_FeaturesAndClassificationByCloudSize)->Apply(cloudSizeCases);
 
 // (b) The full update at ~state.range(0) object points, from the uniform prior each time (the
 // reset is outside the timed region), so every size fuses into the same belief.
@@ -242,14 +241,7 @@ void BM_FullUpdateByCloudSize(benchmark::State& state) {
   }
   totals.report(state);
 }
-BENCHMARK(BM_FullUpdateByCloudSize)
-    ->Arg(1000)
-    ->Arg(10000)
-    ->Arg(100000)
-    ->Arg(300000)
-    ->Unit(benchmark::kMillisecond)
-    ->MeasureProcessCPUTime()
-    ->UseRealTime();
+BENCHMARK(BM_FullUpdateByCloudSize)->Apply(cloudSizeCases);
 
 // (c) Peak memory of everything above (runs last: benchmarks run in registration order).
 void BM_PeakMemory(benchmark::State& state) {

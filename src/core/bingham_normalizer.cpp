@@ -233,13 +233,11 @@ double besselI1Scaled(double x) {
 }
 
 double binghamLogNormalizerUpperBound(const Eigen::Vector3d& z) {
-  if (!z.allFinite() || (z.array() > 0.0).any()) {
-    throw Error("Bingham concentrations must be finite and <= 0.");
-  }
+  checkConcentrations(z);
   Eigen::Vector3d sorted = z;
   std::sort(sorted.data(), sorted.data() + 3);
   const double middle = sorted(1);
-  const double log_uniform = std::log(2.0 * M_PI * M_PI);
+  const double log_uniform = std::log(kTwoPiSquared);
   // (1 - e^m) / -m -> 1 as m -> 0; below 1e-12 the difference is lost in rounding anyway.
   if (middle > -1e-12) return log_uniform;
   return log_uniform + std::log(-std::expm1(middle)) - std::log(-middle);

@@ -54,6 +54,17 @@ Cloud::Ptr finitePoints(const Cloud& cloud) {
   return out;
 }
 
+// Centroids of the occupied voxels of edge `edge` [m].
+Cloud::Ptr voxelCentroids(const Cloud::ConstPtr& cloud, double edge) {
+  auto centroids = pcl::make_shared<Cloud>();
+  pcl::VoxelGrid<pcl::PointXYZ> grid;
+  grid.setInputCloud(cloud);
+  const auto leaf = static_cast<float>(edge);
+  grid.setLeafSize(leaf, leaf, leaf);
+  grid.filter(*centroids);
+  return centroids;
+}
+
 bool finiteNormal(const pcl::Normal& n) {
   return std::isfinite(n.normal_x) && std::isfinite(n.normal_y) && std::isfinite(n.normal_z);
 }
@@ -190,15 +201,8 @@ FeatureSet computeFeatures(const Cloud& cloud, const FeatureParameters& paramete
 
   // The FPFH search surface: voxel centroids of the cloud (or the cloud itself). At 0.6 m a depth
   // camera samples the surface every ~1.1 mm, far denser than a 3 cm descriptor needs.
-  Cloud::Ptr support_candidates = surface;
-  if (parameters.support_voxel > 0.0) {
-    support_candidates = pcl::make_shared<Cloud>();
-    pcl::VoxelGrid<pcl::PointXYZ> reduce;
-    reduce.setInputCloud(surface);
-    const auto edge = static_cast<float>(parameters.support_voxel);
-    reduce.setLeafSize(edge, edge, edge);
-    reduce.filter(*support_candidates);
-  }
+  const Cloud::Ptr support_candidates =
+      parameters.support_voxel > 0.0 ? voxelCentroids(surface, parameters.support_voxel) : surface;
 
   // Normals only where FPFH needs them (the support points), each from the full-resolution cloud
   // within normal_radius: the cost follows the support, not the camera's resolution.
@@ -225,12 +229,7 @@ FeatureSet computeFeatures(const Cloud& cloud, const FeatureParameters& paramete
   if (support->size() < static_cast<std::size_t>(parameters.min_neighbours)) return result;
   tree->setInputCloud(support);
 
-  auto keypoints = pcl::make_shared<Cloud>();
-  pcl::VoxelGrid<pcl::PointXYZ> voxel_grid;
-  voxel_grid.setInputCloud(support);
-  const auto leaf = static_cast<float>(parameters.keypoint_voxel);
-  voxel_grid.setLeafSize(leaf, leaf, leaf);
-  voxel_grid.filter(*keypoints);
+  const Cloud::Ptr keypoints = voxelCentroids(support, parameters.keypoint_voxel);
   if (keypoints->empty()) return result;
 
   // Support neighbourhoods of the keypoints: one search each gives the support count (the
