@@ -15,7 +15,6 @@
 namespace vdc {
 namespace {
 
-
 TEST(BinghamFit, ExactScatterMatrixGivesBackTheDistribution) {
   for (const Eigen::Vector3d& z :
        {Eigen::Vector3d(-1, -0.5, -0.1), Eigen::Vector3d(-30, -8, -2),
@@ -30,6 +29,24 @@ TEST(BinghamFit, ExactScatterMatrixGivesBackTheDistribution) {
     const double scale = std::max(1.0, z.cwiseAbs().maxCoeff());
     EXPECT_LT((fit.exponentMatrix() - truth.exponentMatrix()).cwiseAbs().maxCoeff(), 1e-5 * scale)
         << z.transpose();
+  }
+}
+
+TEST(BinghamFit, AStartingGuessChangesOnlyWhereNewtonStartsNotTheFit) {
+  // A close guess (what a mixture reduction passes), one in another order, a far one and a
+  // non-finite one must all end at the fit from the default start, to the solver's tolerance.
+  const Eigen::Vector3d z(-400, -60, -3);
+  const BinghamDistribution truth = makeDistribution(z, 2);
+  const BinghamDistribution reference = fitBinghamToScatter(truth.scatterMatrix());
+  for (const Eigen::Vector3d& guess :
+       {Eigen::Vector3d(-390, -62, -3.1), Eigen::Vector3d(-3.1, -390, -62),
+        Eigen::Vector3d(-1e5, -1e5, -1e5), Eigen::Vector3d(NAN, -1, -1)}) {
+    const BinghamDistribution fit = fitBinghamToScatter(truth.scatterMatrix(), guess);
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_NEAR(fit.concentrations()(i), reference.concentrations()(i),
+                  1e-6 * std::abs(reference.concentrations()(i)))
+          << "guess " << guess.transpose();
+    }
   }
 }
 

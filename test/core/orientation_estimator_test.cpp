@@ -80,6 +80,11 @@ TEST_F(OrientationEstimatorTest, RefusesInvalidParameters) {
   parameters.max_components = 0;
   EXPECT_THROW(OrientationEstimator(test::quickMugModel(), parameters), Error);
   parameters = {};
+  parameters.belief_weight_floor = 1.0;  // would drop every component but the heaviest's equal
+  EXPECT_THROW(OrientationEstimator(test::quickMugModel(), parameters), Error);
+  parameters.belief_weight_floor = -1e-6;
+  EXPECT_THROW(OrientationEstimator(test::quickMugModel(), parameters), Error);
+  parameters = {};
   parameters.segmentation.roi_radius = -1;
   EXPECT_THROW(OrientationEstimator(test::quickMugModel(), parameters), Error);
   EXPECT_THROW(OrientationEstimator(nullptr, {}), Error);
