@@ -13,23 +13,11 @@
 #include <exception>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <sstream>
 
 namespace vdc {
 namespace {
-
-double logSumExp(const std::vector<double>& values) {
-  const double largest = *std::max_element(values.begin(), values.end());
-  if (!std::isfinite(largest)) return largest;
-  double sum = 0.0;
-  for (double v : values) sum += std::exp(v - largest);
-  return largest + std::log(sum);
-}
-
-// Rotation angle between the orientations of two unit quaternions, in radians.
-double rotationAngle(const Eigen::Vector4d& a, const Eigen::Vector4d& b) {
-  return 2.0 * std::acos(std::min(1.0, std::abs(a.dot(b))));
-}
 
 // The mixture's log density and its Euclidean gradient in R^4, from precomputed exponent
 // matrices A_k and offsets c_k = log w_k - log F_k.
@@ -45,18 +33,27 @@ struct LogDensityModel {
   }
 
   double value(const Eigen::Vector4d& x, Eigen::Vector4d* gradient = nullptr) const {
-    std::vector<double> terms(exponents.size());
+    // The MAP search calls this thousands of times per estimate: no allocation, two passes.
+    double largest = -std::numeric_limits<double>::infinity();
     for (std::size_t k = 0; k < exponents.size(); ++k) {
-      terms[k] = x.dot(exponents[k] * x) + offsets[k];
+      largest = std::max(largest, term(k, x));
     }
-    const double total = logSumExp(terms);
-    if (gradient != nullptr) {
-      gradient->setZero();
-      for (std::size_t k = 0; k < exponents.size(); ++k) {
-        *gradient += 2.0 * std::exp(terms[k] - total) * (exponents[k] * x);
-      }
+    if (gradient != nullptr) gradient->setZero();
+    if (!std::isfinite(largest)) return largest;
+    double sum = 0.0;
+    for (std::size_t k = 0; k < exponents.size(); ++k) {
+      const Eigen::Vector4d ax = exponents[k] * x;
+      const double share = std::exp(x.dot(ax) + offsets[k] - largest);
+      sum += share;
+      if (gradient != nullptr) *gradient += 2.0 * share * ax;
     }
-    return total;
+    if (gradient != nullptr) *gradient /= sum;
+    return largest + std::log(sum);
+  }
+
+ private:
+  double term(std::size_t k, const Eigen::Vector4d& x) const {
+    return x.dot(exponents[k] * x) + offsets[k];
   }
 };
 
@@ -238,23 +235,22 @@ BinghamMixture reduce(const BinghamMixture& mixture, const MixtureReductionOptio
   });
 
   // Greedy clustering, heaviest first: a component joins the first cluster whose leader (its
-  // heaviest member) passes both merge tests, otherwise it leads a new cluster.
-  struct Cluster {
-    std::vector<std::size_t> members;
-  };
-  std::vector<Cluster> clusters;
+  // heaviest member) passes both merge tests, otherwise it leads a new cluster. A product of
+  // mixtures gives ~1000 components and hundreds of clusters, so the tests avoid trigonometry:
+  // the modes' angle test compares |cos| of the half angle, and each leader's probes are kept.
   // Probe points of a component: its mode, and one standard deviation (at most 45 degrees of
   // quaternion arc) along its loosest axis both ways. For a girdle the latter lie on its circle.
+  using Probes = std::array<Eigen::Vector4d, 3>;
   const auto probes = [](const BinghamDistribution& c) {
     const double arc = std::min(M_PI / 4.0, 1.0 / std::sqrt(2.0 * -c.concentrations()(2) + 1e-300));
-    return std::array<Eigen::Vector4d, 3>{c.mode(),
-                                          std::cos(arc) * c.mode() + std::sin(arc) * c.axis(2),
-                                          std::cos(arc) * c.mode() - std::sin(arc) * c.axis(2)};
+    return Probes{c.mode(), std::cos(arc) * c.mode() + std::sin(arc) * c.axis(2),
+                  std::cos(arc) * c.mode() - std::sin(arc) * c.axis(2)};
   };
   // q looks like p near p's mode when its density relative to its peak (x^T A x, 0 at the mode)
   // falls at most merge_log_density below p's own at each of p's probe points.
-  const auto resembles = [&](const BinghamDistribution& p, const BinghamDistribution& q) {
-    for (const Eigen::Vector4d& x : probes(p)) {
+  const auto resembles = [&](const BinghamDistribution& p, const Probes& p_probes,
+                             const BinghamDistribution& q) {
+    for (const Eigen::Vector4d& x : p_probes) {
       if (x.dot(q.exponentMatrix() * x) <
           x.dot(p.exponentMatrix() * x) - options.merge_log_density) {
         return false;
@@ -262,20 +258,30 @@ BinghamMixture reduce(const BinghamMixture& mixture, const MixtureReductionOptio
     }
     return true;
   };
-  const auto mergeable = [&](const BinghamDistribution& p, const BinghamDistribution& q) {
-    return rotationAngle(p.mode(), q.mode()) <= options.merge_angle && resembles(p, q) &&
-           resembles(q, p);
+  // The rotation angle 2 acos|p.q| is at most merge_angle.
+  const double min_mode_alignment = std::cos(std::min(options.merge_angle, M_PI) / 2.0);
+  struct Cluster {
+    std::vector<std::size_t> members;
+    Probes leader_probes;
   };
+  std::vector<Cluster> clusters;
   for (std::size_t k : order) {
+    const BinghamDistribution& candidate = mixture.component(k);
+    std::optional<Probes> candidate_probes;
     bool joined = false;
     for (Cluster& cluster : clusters) {
-      if (mergeable(mixture.component(cluster.members.front()), mixture.component(k))) {
-        cluster.members.push_back(k);
-        joined = true;
-        break;
-      }
+      const BinghamDistribution& leader = mixture.component(cluster.members.front());
+      if (std::abs(leader.mode().dot(candidate.mode())) < min_mode_alignment) continue;
+      if (!resembles(leader, cluster.leader_probes, candidate)) continue;
+      if (!candidate_probes) candidate_probes = probes(candidate);
+      if (!resembles(candidate, *candidate_probes, leader)) continue;
+      cluster.members.push_back(k);
+      joined = true;
+      break;
     }
-    if (!joined) clusters.push_back(Cluster{{k}});
+    if (!joined) {
+      clusters.push_back(Cluster{{k}, candidate_probes ? *candidate_probes : probes(candidate)});
+    }
   }
 
   // Merged weights can reorder the clusters: rank them by total weight, then cap.
@@ -353,8 +359,12 @@ Eigen::Vector4d mapEstimate(const BinghamMixture& mixture, const MapOptions& opt
     starts.resize(options.max_refined_starts);
   }
 
-  Start best = starts.front();
-  for (Start start : starts) {
+  // Each start climbs on its own: both cores share the starts; the best of each start's end
+  // points is kept, ties going to the earlier start, so the result does not depend on threads.
+  std::vector<Start> ends(starts.size());
+#pragma omp parallel for schedule(dynamic, 1)
+  for (std::ptrdiff_t s = 0; s < static_cast<std::ptrdiff_t>(starts.size()); ++s) {
+    const Start start = starts[static_cast<std::size_t>(s)];
     Eigen::Vector4d x = start.x;
     double value = start.value;
     double step = -1.0;  // set from the gradient's scale on the first iteration
@@ -382,7 +392,11 @@ Eigen::Vector4d mapEstimate(const BinghamMixture& mixture, const MapOptions& opt
       if (!moved) break;
       step *= 2.0;  // let the step grow again after a success
     }
-    if (value > best.value) best = {x, value};
+    ends[static_cast<std::size_t>(s)] = {x, value};
+  }
+  Start best = starts.front();
+  for (const Start& end : ends) {
+    if (end.value > best.value) best = end;
   }
   Eigen::Vector4d result = best.x.normalized();
   return result(0) < 0.0 ? Eigen::Vector4d(-result) : result;

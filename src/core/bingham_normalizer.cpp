@@ -156,6 +156,13 @@ constexpr int kMaxIntervals = 4000;
 
 BinghamNormalizer integrate(const Eigen::Vector3d& z, bool with_gradient) {
   checkConcentrations(z);
+  if (z.isZero(0.0)) {
+    // The uniform distribution, exactly: every default-constructed distribution asks for it.
+    BinghamNormalizer uniform;
+    uniform.value = kTwoPiSquared;
+    uniform.gradient = Eigen::Vector3d::Constant(with_gradient ? kTwoPiSquared / 4.0 : 0.0);
+    return uniform;
+  }
   const Integrand f{z, with_gradient};
 
   // The integrand is log-convex in t (a product of Laplace transforms), so it peaks only at
@@ -165,10 +172,10 @@ BinghamNormalizer integrate(const Eigen::Vector3d& z, bool with_gradient) {
   const double scale_at_one = std::max(std::abs(z(0)), std::abs(z(1)));
   const double scale_at_zero = std::abs(z(2));
   std::vector<double> breakpoints{0.0, 0.5, 1.0};
-  for (double width = 1.0 / std::max(scale_at_zero, 1.0); width < 0.5; width *= 4.0) {
+  for (double width = 1.0 / std::max(scale_at_zero, 1.0); width < 0.5; width *= 8.0) {
     breakpoints.push_back(width);
   }
-  for (double width = 1.0 / std::max(scale_at_one, 1.0); width < 0.5; width *= 4.0) {
+  for (double width = 1.0 / std::max(scale_at_one, 1.0); width < 0.5; width *= 8.0) {
     breakpoints.push_back(1.0 - width);
   }
   std::sort(breakpoints.begin(), breakpoints.end());

@@ -17,9 +17,9 @@ constexpr double kMaxFittedConcentration = 1e6;
 // Maximum-likelihood Bingham distribution for a scatter matrix S = E[x x^T] (symmetric,
 // positive semi-definite; scaled to unit trace here). The axes are the eigenvectors of S; the
 // concentrations solve E_z[(v_i . x)^2] = s_i (the moment equations of the likelihood), found by
-// Newton's method on the concave log-likelihood sum_i z_i s_i - log F(z). Throws vdc::Error for a
-// non-finite, non-symmetric, indefinite or zero matrix. `initial_concentrations` (<= 0, any
-// order), when given, start Newton's method instead of the asymptotic guess: a mixture
+// a quasi-Newton (BFGS) ascent on the concave log-likelihood sum_i z_i s_i - log F(z). Throws
+// vdc::Error for a non-finite, non-symmetric, indefinite or zero matrix. `initial_concentrations`
+// (<= 0, any order), when given, start the ascent instead of the asymptotic guess: a mixture
 // reduction merging near-identical components passes the heaviest one's and converges in a step
 // or two. The result is the same to the solver's 1e-9 tolerance either way.
 BinghamDistribution fitBinghamToScatter(
