@@ -98,7 +98,9 @@ ViewUpdate OrientationEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cl
   ViewUpdate result;
   const Clock::time_point start = Clock::now();
 
-  const pcl::PointCloud<pcl::PointXYZ> object = segmentObject(cloud, parameters_.segmentation);
+  SegmentationParameters segmentation = parameters_.segmentation;
+  segmentation.roi_centre = world_from_camera.inverse() * segmentation.roi_centre;
+  const pcl::PointCloud<pcl::PointXYZ> object = segmentObject(cloud, segmentation);
   const Clock::time_point segmented = Clock::now();
   result.timing.segmentation = millisecondsBetween(start, segmented);
   result.object_points = static_cast<int>(object.size());

@@ -13,7 +13,6 @@
 
 #include "view_direction_classification/core/error.h"
 #include "view_direction_classification/core/model_bundle.h"
-#include "view_direction_classification/core/object_segmentation.h"
 #include "view_direction_classification/ros/belief_markers.h"
 #include "view_direction_classification/ros/bingham_conversions.h"
 #include "view_direction_classification/ros/cloud_conversions.h"
@@ -35,23 +34,14 @@ std::shared_ptr<const ModelBundle> loadModel(const std::string& path) {
   return std::make_shared<const ModelBundle>(loadModelBundle(path));
 }
 
-// The core segments in the cloud's frame, but the region of interest is configured in the fixed
-// frame and the camera moves: the node segments itself (with the region moved into each cloud's
-// frame) and gives the core the object's points with segmentation "none".
-EstimatorParameters coreParametersWithoutSegmentation(EstimatorParameters parameters) {
-  checkSegmentationParameters(parameters.segmentation);
-  parameters.segmentation.mode = SegmentationMode::kNone;
-  return parameters;
-}
-
 }  // namespace
 
 OrientationEstimatorRos::OrientationEstimatorRos(ros::NodeHandle node, ros::NodeHandle private_node)
     : node_(node),
       private_node_(private_node),
       parameters_(readEstimatorRosParameters(private_node)),
-      estimator_(std::make_unique<OrientationEstimator>(
-          loadModel(parameters_.model_path), coreParametersWithoutSegmentation(parameters_.core))),
+      estimator_(std::make_unique<OrientationEstimator>(loadModel(parameters_.model_path),
+                                                        parameters_.core)),
       tf_listener_(tf_buffer_, node_),
       diagnostics_(node_, private_node_, private_node_.getNamespace()) {
   estimate_publisher_ = private_node_.advertise<BinghamMixtureMsg>("estimate", 1);
@@ -168,14 +158,6 @@ void OrientationEstimatorRos::processCloud(const sensor_msgs::PointCloud2& cloud
   }
   const double conversion_ms = millisecondsSince(start);
 
-  start = Clock::now();
-  if (parameters_.core.segmentation.mode != SegmentationMode::kNone) {
-    SegmentationParameters segmentation = parameters_.core.segmentation;
-    segmentation.roi_centre = world_from_camera.inverse() * segmentation.roi_centre;
-    xyz = segmentObject(xyz, segmentation);
-  }
-  const double segmentation_ms = millisecondsSince(start);
-
   std::lock_guard<std::mutex> lock(estimator_mutex_);
   const ViewUpdate update = estimator_->update(xyz, world_from_camera);
   if (!update.updated) {
@@ -191,7 +173,6 @@ void OrientationEstimatorRos::processCloud(const sensor_msgs::PointCloud2& cloud
   last_skip_reason_.clear();
   last_tf_ms_ = tf_ms;
   last_conversion_ms_ = conversion_ms;
-  last_segmentation_ms_ = segmentation_ms;
   last_timing_ = update.timing;
   last_publish_ms_ = publish_ms;
 }
@@ -305,7 +286,7 @@ void OrientationEstimatorRos::diagnose(diagnostic_updater::DiagnosticStatusWrapp
   status.add("last skip reason", last_skip_reason_.empty() ? "none" : last_skip_reason_);
   status.add("last tf lookup [ms]", last_tf_ms_);
   status.add("last conversion [ms]", last_conversion_ms_);
-  status.add("last segmentation [ms]", last_segmentation_ms_);
+  status.add("last segmentation [ms]", last_timing_.segmentation);
   status.add("last features [ms]", last_timing_.features);
   status.add("last classification [ms]", last_timing_.classification);
   status.add("last measurement [ms]", last_timing_.measurement);

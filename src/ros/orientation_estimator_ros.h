@@ -88,7 +88,7 @@ class OrientationEstimatorRos {
   std::mutex statistics_mutex_;
   std::uint64_t received_ = 0, processed_ = 0, dropped_ = 0, skipped_ = 0;
   std::string last_skip_reason_;
-  double last_tf_ms_ = 0, last_conversion_ms_ = 0, last_segmentation_ms_ = 0, last_publish_ms_ = 0;
+  double last_tf_ms_ = 0, last_conversion_ms_ = 0, last_publish_ms_ = 0;
   UpdateTiming last_timing_;
 };
 

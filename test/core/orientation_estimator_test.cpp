@@ -135,6 +135,37 @@ TEST_F(OrientationEstimatorTest, EstimateFollowsARotationOfTheFixedFrame) {
   EXPECT_LT(rotationErrorDeg(rotated.mapOrientation(), expected), 0.5);
 }
 
+TEST_F(OrientationEstimatorTest, RegionOfInterestIsAFixedFramePointMovedIntoEachCloud) {
+  // Views from opposite sides, each cloud with a blob of clutter 30 cm beside the mug: a region
+  // of interest around the mug's place in the fixed frame keeps the mug and drops the clutter in
+  // both, although that place has different coordinates in each camera frame.
+  EstimatorParameters parameters;
+  parameters.segmentation.mode = SegmentationMode::kRegionOfInterest;
+  parameters.segmentation.roi_centre = worldFromObject().translation();
+  parameters.segmentation.min_plane_fraction = 1.0;  // no table in these clouds: no plane removed
+  OrientationEstimator estimator(test::quickMugModel(), parameters);
+  for (const Eigen::Vector3d& direction :
+       {Eigen::Vector3d(1, 0.2, 0.3), Eigen::Vector3d(-1, -0.2, 0.3)}) {
+    auto [cloud, world_from_camera] = view(direction.normalized(), 0.5, 3);
+    const std::size_t mug_points = countValidPoints(cloud);
+    for (int i = 0; i < 400; ++i) {  // a 4 cm cube of clutter beside the mug (camera frame)
+      cloud.push_back(
+          pcl::PointXYZ(0.3f + 0.0001f * (i % 400), 0.002f * (i % 20), 0.6f + 0.002f * (i / 20)));
+    }
+    const ViewUpdate update = estimator.update(cloud, world_from_camera);
+    ASSERT_TRUE(update.updated) << update.skip_reason;
+    EXPECT_LE(update.object_points, static_cast<int>(mug_points));
+    EXPECT_GE(update.object_points, static_cast<int>(0.9 * mug_points));
+  }
+  // A region of interest where nothing stands leaves no points: the view is skipped.
+  parameters.segmentation.roi_centre = worldFromObject().translation() + Eigen::Vector3d(0, 0, 1);
+  OrientationEstimator elsewhere(test::quickMugModel(), parameters);
+  const auto [cloud, world_from_camera] = view(Eigen::Vector3d(1, 0, 0), 0, 4);
+  const ViewUpdate update = elsewhere.update(cloud, world_from_camera);
+  EXPECT_FALSE(update.updated);
+  EXPECT_EQ(update.object_points, 0);
+}
+
 TEST_F(OrientationEstimatorTest, ResetForgetsBeliefAndPosition) {
   OrientationEstimator estimator(test::quickMugModel(), {});
   const auto [cloud, world_from_camera] = view(Eigen::Vector3d(1, 0, 0.2).normalized(), 0, 9);

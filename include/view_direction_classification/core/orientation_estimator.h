@@ -30,6 +30,8 @@ struct EstimatorParameters {
   // (and their products never computed): METHOD.md's 1e-6. 1e-3 gave the same median errors on
   // the evaluation but no faster updates in the estimator benchmark (fewer merges, more refits).
   double belief_weight_floor = 1e-6;
+  // Segmentation of each cloud. Its roi_centre is a point of the fixed frame (where an object
+  // stands still while the camera moves); update() moves it into each cloud's frame.
   SegmentationParameters segmentation;
 };
 
@@ -77,7 +79,8 @@ class OrientationEstimator {
   OrientationEstimator(std::shared_ptr<const ModelBundle> model, EstimatorParameters parameters);
 
   // cloud: in the camera frame (any frame whose pose is world_from_camera; need not be optical,
-  // need not be organised; NaN points allowed). Segments, computes features, classifies, sums
+  // need not be organised; NaN points allowed). Segments (the region of interest moved from the
+  // fixed frame into the cloud's frame with world_from_camera), computes features, classifies, sums
   // the n_feat most certain, builds the measurement along the actual line of sight to the
   // object, moves it into the fixed frame and fuses it. Never throws for cloud content: empty,
   // NaN or too small clouds are skipped with a reason. Throws vdc::Error for a non-finite pose.

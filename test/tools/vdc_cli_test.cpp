@@ -1,0 +1,126 @@
+// The `vdc` tool's contract as its users (scripts, CI jobs) see it: exit code 0 on success and
+// for --help, 2 for a usage error, 1 with one "vdc: ..." line on stderr for a failure; bad files
+// never crash it and a failed command leaves existing output files untouched.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct ToolRun {
+  int exit_code = -1;  // -1: killed by a signal (a crash)
+  std::string output;  // stdout and stderr
+};
+
+ToolRun runVdc(const std::string& arguments) {
+  const std::string command = std::string(VDC_EXECUTABLE) + " " + arguments + " 2>&1";
+  ToolRun run;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr) return run;
+  std::array<char, 4096> buffer;
+  std::size_t read = 0;
+  while ((read = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) {
+    run.output.append(buffer.data(), read);
+  }
+  const int status = pclose(pipe);
+  if (WIFEXITED(status)) run.exit_code = WEXITSTATUS(status);
+  return run;
+}
+
+std::string readFile(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+void writeFile(const fs::path& path, const std::string& content) {
+  std::ofstream(path, std::ios::binary) << content;
+}
+
+// A failure is exactly one line naming the tool.
+void expectOneFailureLine(const ToolRun& run) {
+  EXPECT_EQ(run.exit_code, 1) << run.output;
+  EXPECT_EQ(run.output.rfind("vdc: ", 0), 0u) << run.output;
+  EXPECT_EQ(run.output.find('\n'), run.output.size() - 1) << run.output;
+}
+
+class VdcCliTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    directory_ = fs::temp_directory_path() /
+                 ("vdc_cli_test_" + std::to_string(::getpid()) + "_" +
+                  ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(directory_);
+  }
+  void TearDown() override { fs::remove_all(directory_); }
+  std::string path(const std::string& name) const { return (directory_ / name).string(); }
+
+  fs::path directory_;
+};
+
+TEST_F(VdcCliTest, HelpExitsZeroAndListsTheSubcommands) {
+  const ToolRun run = runVdc("--help");
+  EXPECT_EQ(run.exit_code, 0);
+  for (const char* subcommand : {"mesh", "views", "train", "inspect", "heatmap", "evaluate"}) {
+    EXPECT_NE(run.output.find(subcommand), std::string::npos) << subcommand;
+  }
+}
+
+TEST_F(VdcCliTest, UsageErrorsExitTwo) {
+  EXPECT_EQ(runVdc("").exit_code, 2);                    // no subcommand
+  EXPECT_EQ(runVdc("frobnicate").exit_code, 2);          // unknown subcommand
+  EXPECT_EQ(runVdc("inspect").exit_code, 2);             // missing required argument
+  EXPECT_EQ(runVdc("train --mesh m.ply").exit_code, 2);  // missing --out
+  EXPECT_EQ(runVdc("train --mesh m.ply --out m.h5 --views 1").exit_code, 2);  // out of range
+  EXPECT_EQ(runVdc("evaluate --model m.h5 --mesh m.ply --out e --sequences 0").exit_code, 2);
+}
+
+TEST_F(VdcCliTest, MissingCorruptAndForeignModelFilesFailWithOneLine) {
+  const ToolRun missing = runVdc("inspect " + path("absent.h5"));
+  expectOneFailureLine(missing);
+  EXPECT_NE(missing.output.find("absent.h5"), std::string::npos) << missing.output;
+
+  writeFile(path("garbage.h5"), "this is not an HDF5 file\n");
+  expectOneFailureLine(runVdc("inspect " + path("garbage.h5")));
+  expectOneFailureLine(runVdc("heatmap --model " + path("garbage.h5") + " --out " + path("h")));
+
+  // A real file of another kind: the tool's own mesh passed as a model.
+  ASSERT_EQ(runVdc("mesh mug --out " + path("mug.ply")).exit_code, 0);
+  expectOneFailureLine(runVdc("inspect " + path("mug.ply")));
+  expectOneFailureLine(runVdc("evaluate --model " + path("mug.ply") + " --mesh " + path("mug.ply") +
+                              " --out " + path("e") + " --no-figure"));
+}
+
+TEST_F(VdcCliTest, BadMeshesFailWithOneLine) {
+  expectOneFailureLine(runVdc("mesh check " + path("absent.ply")));
+  writeFile(path("broken.ply"), "ply\nformat ascii 1.0\nelement vertex 3\nend_header\n1 2\n");
+  expectOneFailureLine(runVdc("mesh check " + path("broken.ply")));
+}
+
+TEST_F(VdcCliTest, AFailedTrainingLeavesAnExistingBundleUntouched) {
+  const std::string previous = "the previous bundle's bytes";
+  writeFile(path("model.h5"), previous);
+  writeFile(path("broken.ply"), "ply\nformat ascii 1.0\nelement vertex 3\nend_header\n1 2\n");
+  expectOneFailureLine(
+      runVdc("train --quick --mesh " + path("broken.ply") + " --out " + path("model.h5")));
+  EXPECT_EQ(readFile(path("model.h5")), previous);
+  // Nothing half-written is left beside it either.
+  int files = 0;
+  for (const auto& entry : fs::directory_iterator(directory_)) {
+    (void)entry;
+    ++files;
+  }
+  EXPECT_EQ(files, 2);  // model.h5 and broken.ply
+}
+
+}  // namespace
