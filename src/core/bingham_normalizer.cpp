@@ -85,10 +85,26 @@ const KronrodRule& kronrodRule() {
   return rule;
 }
 
+// e^shift I_0(x) and e^shift I_1(x) for x >= 0 and shift <= 0, with shift + x <= 0 (so both are
+// at most 1). Below the asymptotic range the unscaled Bessel functions are finite and one
+// exponential serves both; the scaled functions would spend one more on each.
+struct ShiftedBessel {
+  double i0, i1;
+};
+ShiftedBessel shiftedBessel(double shift, double x, bool with_i1) {
+  if (x >= kAsymptoticBesselArgument) {
+    const double scale = std::exp(shift + x);
+    return {scale * besselI0Scaled(x), with_i1 ? scale * besselI1Scaled(x) : 0.0};
+  }
+  const double scale = std::exp(shift);
+  return {scale * boost::math::cyl_bessel_i(0, x, DoublePrecisionPolicy()),
+          with_i1 ? scale * boost::math::cyl_bessel_i(1, x, DoublePrecisionPolicy()) : 0.0};
+}
+
 // The integrand of Wood's formula (without 2 pi^2) and, when wanted, those of dF/dz_i. With
 // u on the first circle (squared radius t) and v on the second (squared radius 1-t):
-//   E_u[exp(a u1^2 + b u2^2)]      = e^{max(a,b)} I0e(|a-b|/2)
-//   E_u[u1^2 exp(a u1^2 + b u2^2)] = e^{max(a,b)} (I0e(|a-b|/2) + sign(a-b) I1e(|a-b|/2)) / 2
+//   E_u[exp(a u1^2 + b u2^2)]      = e^{(a+b)/2} I0(|a-b|/2)
+//   E_u[u1^2 exp(a u1^2 + b u2^2)] = e^{(a+b)/2} (I0(|a-b|/2) + sign(a-b) I1(|a-b|/2)) / 2
 // and x1^2 = t u1^2, x3^2 = (1-t) v1^2.
 struct Integrand {
   Eigen::Vector3d z;
@@ -99,23 +115,18 @@ struct Integrand {
     const double s = 1.0 - t;
     const double a = t * z(0), b = t * z(1);
     const double c = s * z(2);  // paired with the mode's concentration 0
-    const double first_x = std::abs(a - b) / 2.0;
-    const double second_x = std::abs(c) / 2.0;
-    const double first_i0 = besselI0Scaled(first_x);
-    const double second_i0 = besselI0Scaled(second_x);
-    const double first_scale = std::exp(std::max(a, b));
-    const double second_scale = std::exp(std::max(c, 0.0));
-    const double first = first_scale * first_i0;
-    const double second = second_scale * second_i0;
+    const ShiftedBessel first_circle =
+        shiftedBessel(0.5 * (a + b), 0.5 * std::abs(a - b), with_gradient);
+    const ShiftedBessel second_circle = shiftedBessel(0.5 * c, 0.5 * std::abs(c), with_gradient);
+    const double first = first_circle.i0;
+    const double second = second_circle.i0;
     Eigen::Vector4d values(first * second, 0.0, 0.0, 0.0);
     if (with_gradient) {
-      const double first_i1 = besselI1Scaled(first_x);
-      const double second_i1 = besselI1Scaled(second_x);
       const double sign_ab = a >= b ? 1.0 : -1.0;
       const double sign_c = c >= 0.0 ? 1.0 : -1.0;
-      values(1) = t * first_scale * 0.5 * (first_i0 + sign_ab * first_i1) * second;
-      values(2) = t * first_scale * 0.5 * (first_i0 - sign_ab * first_i1) * second;
-      values(3) = s * second_scale * 0.5 * (second_i0 + sign_c * second_i1) * first;
+      values(1) = t * 0.5 * (first + sign_ab * first_circle.i1) * second;
+      values(2) = t * 0.5 * (first - sign_ab * first_circle.i1) * second;
+      values(3) = s * 0.5 * (second + sign_c * second_circle.i1) * first;
     }
     return values;
   }

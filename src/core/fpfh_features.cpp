@@ -237,13 +237,19 @@ FeatureSet computeFeatures(const Cloud& cloud, const FeatureParameters& paramete
   const std::size_t keypoint_count = keypoints->size();
   std::vector<pcl::Indices> keypoint_neighbours(keypoint_count);
   std::vector<std::vector<float>> keypoint_distances(keypoint_count);
+#pragma omp parallel for schedule(dynamic, 16)
+  for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t>(keypoint_count); ++k) {
+    const auto index = static_cast<std::size_t>(k);
+    tree->radiusSearch((*keypoints)[index], parameters.fpfh_radius, keypoint_neighbours[index],
+                       keypoint_distances[index]);
+  }
   std::vector<char> needed(support->size(), 0);
   std::vector<std::size_t> candidates;
   candidates.reserve(keypoint_count);
   for (std::size_t k = 0; k < keypoint_count; ++k) {
-    const int count = tree->radiusSearch((*keypoints)[k], parameters.fpfh_radius,
-                                         keypoint_neighbours[k], keypoint_distances[k]);
-    if (count < parameters.min_neighbours) continue;
+    if (keypoint_neighbours[k].size() < static_cast<std::size_t>(parameters.min_neighbours)) {
+      continue;
+    }
     candidates.push_back(k);
     for (const auto j : keypoint_neighbours[k]) needed[static_cast<std::size_t>(j)] = 1;
   }
