@@ -170,6 +170,18 @@ void checkBundle(const Checker& check, const ModelBundle& b, const ClassifierArr
   const auto M = static_cast<Eigen::Index>(b.view_directions.size());
   if (M < 1) check.fail("dataset views/directions is empty (a model needs at least one view)");
   check.matrix("views/directions", toMatrix(b.view_directions), M, 3);
+  // Every measurement is built along these directions: a bad one would fail each cloud online.
+  for (Eigen::Index m = 0; m < M; ++m) {
+    const double length = b.view_directions[static_cast<std::size_t>(m)].norm();
+    if (std::abs(length - 1.0) > 1e-6) {
+      check.fail("dataset views/directions row " + std::to_string(m) +
+                 " is not a unit vector (length " + std::to_string(length) + ")");
+    }
+  }
+  if (b.parameters.views != M) {
+    check.fail("attribute parameters/views is " + std::to_string(b.parameters.views) +
+               ", expected " + std::to_string(M) + " (the rows of views/directions)");
+  }
   check.matrix("views/centroid_offsets", b.centroid_offsets, M, 3);
 
   if (c.num_views != M) {

@@ -16,48 +16,6 @@ namespace {
 
 constexpr int kMaxDirections = 10000;
 
-std::vector<Eigen::Vector3d> icosahedron(std::vector<Eigen::Vector3i>* faces) {
-  const double phi = (1.0 + std::sqrt(5.0)) / 2.0;
-  std::vector<Eigen::Vector3d> v = {{-1, phi, 0}, {1, phi, 0}, {-1, -phi, 0}, {1, -phi, 0},
-                                    {0, -1, phi}, {0, 1, phi}, {0, -1, -phi}, {0, 1, -phi},
-                                    {phi, 0, -1}, {phi, 0, 1}, {-phi, 0, -1}, {-phi, 0, 1}};
-  for (auto& p : v) p.normalize();
-  *faces = {{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-            {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-            {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
-  return v;
-}
-
-// Vertices of the icosphere of the given level: each level splits every triangle into four at
-// its (re-normalised) edge midpoints.
-std::vector<Eigen::Vector3d> icosphere(int level) {
-  std::vector<Eigen::Vector3i> faces;
-  std::vector<Eigen::Vector3d> v = icosahedron(&faces);
-  for (int l = 0; l < level; ++l) {
-    std::map<std::pair<int, int>, int> midpoints;
-    auto midpoint = [&](int a, int b) {
-      const auto key = std::minmax(a, b);
-      const auto found = midpoints.find(key);
-      if (found != midpoints.end()) return found->second;
-      v.push_back((v[a] + v[b]).normalized());
-      const int index = static_cast<int>(v.size()) - 1;
-      midpoints.emplace(key, index);
-      return index;
-    };
-    std::vector<Eigen::Vector3i> finer;
-    finer.reserve(faces.size() * 4);
-    for (const auto& f : faces) {
-      const int ab = midpoint(f[0], f[1]), bc = midpoint(f[1], f[2]), ca = midpoint(f[2], f[0]);
-      finer.emplace_back(f[0], ab, ca);
-      finer.emplace_back(f[1], bc, ab);
-      finer.emplace_back(f[2], ca, bc);
-      finer.emplace_back(ab, bc, ca);
-    }
-    faces = std::move(finer);
-  }
-  return v;
-}
-
 // Fibonacci lattice: equal-area latitude bands, longitudes advancing by the golden angle.
 std::vector<Eigen::Vector3d> fibonacciLattice(int count) {
   const double golden_angle = M_PI * (3.0 - std::sqrt(5.0));
@@ -124,6 +82,46 @@ double voronoiCellRadius(const std::vector<Eigen::Vector3d>& d, int m) {
 
 }  // namespace
 
+Icosphere makeIcosphere(int level) {
+  if (level < 0 || level > 6) {
+    throw Error("icosphere subdivision level must be in [0, 6], got " + std::to_string(level));
+  }
+  const double phi = (1.0 + std::sqrt(5.0)) / 2.0;
+  Icosphere sphere;
+  sphere.vertices = {{-1, phi, 0}, {1, phi, 0}, {-1, -phi, 0}, {1, -phi, 0},
+                     {0, -1, phi}, {0, 1, phi}, {0, -1, -phi}, {0, 1, -phi},
+                     {phi, 0, -1}, {phi, 0, 1}, {-phi, 0, -1}, {-phi, 0, 1}};
+  for (auto& p : sphere.vertices) p.normalize();
+  sphere.faces = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                  {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                  {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                  {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
+  std::vector<Eigen::Vector3d>& v = sphere.vertices;
+  for (int l = 0; l < level; ++l) {
+    std::map<std::pair<int, int>, int> midpoints;
+    auto midpoint = [&](int a, int b) {
+      const auto key = std::minmax(a, b);
+      const auto found = midpoints.find(key);
+      if (found != midpoints.end()) return found->second;
+      v.push_back((v[a] + v[b]).normalized());
+      const int index = static_cast<int>(v.size()) - 1;
+      midpoints.emplace(key, index);
+      return index;
+    };
+    std::vector<Eigen::Vector3i> finer;
+    finer.reserve(sphere.faces.size() * 4);
+    for (const auto& f : sphere.faces) {
+      const int ab = midpoint(f[0], f[1]), bc = midpoint(f[1], f[2]), ca = midpoint(f[2], f[0]);
+      finer.emplace_back(f[0], ab, ca);
+      finer.emplace_back(f[1], bc, ab);
+      finer.emplace_back(f[2], ca, bc);
+      finer.emplace_back(ab, bc, ca);
+    }
+    sphere.faces = std::move(finer);
+  }
+  return sphere;
+}
+
 ViewSphere::ViewSphere(int count) {
   if (count < 2 || count > kMaxDirections) {
     throw Error("the number of viewing directions must be between 2 and " +
@@ -131,16 +129,16 @@ ViewSphere::ViewSphere(int count) {
   }
   switch (count) {
     case 12:
-      directions_ = icosphere(0);
+      directions_ = makeIcosphere(0).vertices;
       break;
     case 42:
-      directions_ = icosphere(1);
+      directions_ = makeIcosphere(1).vertices;
       break;
     case 162:
-      directions_ = icosphere(2);
+      directions_ = makeIcosphere(2).vertices;
       break;
     case 642:
-      directions_ = icosphere(3);
+      directions_ = makeIcosphere(3).vertices;
       break;
     default:
       directions_ = fibonacciLattice(count);

@@ -1,27 +1,12 @@
-#include <nodelet/nodelet.h>
 #include <pluginlib/class_list_macros.hpp>
 
-#include <exception>
-#include <memory>
-
 #include "../ros/informativeness_server_ros.h"
+#include "view_direction_classification/ros/shell_nodelet.h"
 
 namespace vdc {
 
-// The informativeness server as a nodelet. A bad model bundle leaves it inert with one fatal
-// line (a nodelet cannot exit its manager, and the other nodelets should keep running).
-class InformativenessServerNodelet : public nodelet::Nodelet {
- private:
-  void onInit() override {
-    try {
-      server_ = std::make_unique<InformativenessServerRos>(getNodeHandle(), getPrivateNodeHandle());
-    } catch (const std::exception& error) {
-      NODELET_FATAL("%s: %s", getName().c_str(), error.what());
-    }
-  }
-
-  std::unique_ptr<InformativenessServerRos> server_;
-};
+// The informativeness server as a nodelet, beside the estimator in one manager.
+class InformativenessServerNodelet : public ShellNodelet<InformativenessServerRos> {};
 
 }  // namespace vdc
 

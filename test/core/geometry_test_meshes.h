@@ -6,11 +6,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <utility>
 #include <vector>
 
 #include "view_direction_classification/core/triangle_mesh.h"
+#include "view_direction_classification/core/view_sphere.h"
 
 namespace vdc::test {
 
@@ -42,37 +42,11 @@ inline TriangleMesh makeSquare(float size, float z) {
 
 // Icosphere of the given radius (vertices on the sphere), outward oriented.
 inline TriangleMesh makeSphere(float radius, int level) {
-  const float t = (1.0f + std::sqrt(5.0f)) / 2.0f;
+  const Icosphere sphere = makeIcosphere(level);
   TriangleMesh mesh;
-  mesh.vertices = {{-1, t, 0},  {1, t, 0},  {-1, -t, 0}, {1, -t, 0}, {0, -1, t},  {0, 1, t},
-                   {0, -1, -t}, {0, 1, -t}, {t, 0, -1},  {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
-  for (auto& v : mesh.vertices) v.normalize();
-  mesh.triangles = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
-                    {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
-                    {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
-                    {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
-  for (int l = 0; l < level; ++l) {
-    std::map<std::pair<int, int>, int> midpoints;
-    auto midpoint = [&](int a, int b) {
-      const auto key = std::minmax(a, b);
-      const auto found = midpoints.find(key);
-      if (found != midpoints.end()) return found->second;
-      mesh.vertices.push_back((mesh.vertices[a] + mesh.vertices[b]).normalized());
-      const int index = static_cast<int>(mesh.vertices.size()) - 1;
-      midpoints.emplace(key, index);
-      return index;
-    };
-    std::vector<Eigen::Vector3i> finer;
-    for (const auto& f : mesh.triangles) {
-      const int ab = midpoint(f[0], f[1]), bc = midpoint(f[1], f[2]), ca = midpoint(f[2], f[0]);
-      finer.emplace_back(f[0], ab, ca);
-      finer.emplace_back(f[1], bc, ab);
-      finer.emplace_back(f[2], ca, bc);
-      finer.emplace_back(ab, bc, ca);
-    }
-    mesh.triangles = std::move(finer);
-  }
-  for (auto& v : mesh.vertices) v *= radius;
+  for (const Eigen::Vector3d& v : sphere.vertices)
+    mesh.vertices.push_back(radius * v.cast<float>());
+  mesh.triangles = sphere.faces;
   return mesh;
 }
 

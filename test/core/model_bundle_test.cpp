@@ -232,6 +232,33 @@ TEST_F(ModelBundleFiles, RefusesWrongShape) {
   EXPECT_EQ(loadError(path), path + ": dataset classifier/weights has 7 rows, expected 68");
 }
 
+TEST_F(ModelBundleFiles, RefusesViewDirectionsThatAreNotUnitVectors) {
+  const std::string path = editedBundle("directions.h5", [](hid_t id) {
+    const hid_t set = H5Dopen2(id, "views/directions", H5P_DEFAULT);
+    std::vector<double> values(4 * 3, 0.0);
+    for (int m = 0; m < 4; ++m) values[3 * m + 2] = 1.0;
+    values[3 * 2 + 2] = 2.0;  // row 2 twice as long
+    H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data());
+    H5Dclose(set);
+  });
+  EXPECT_EQ(loadError(path),
+            path + ": dataset views/directions row 2 is not a unit vector (length 2.000000)");
+}
+
+TEST_F(ModelBundleFiles, RefusesAViewCountThatDisagreesWithTheDirections) {
+  const std::string path = editedBundle("views.h5", [](hid_t id) {
+    // Through the group: HDF5 1.10 cannot write an attribute opened by path from the file.
+    const hid_t group = H5Gopen2(id, "parameters", H5P_DEFAULT);
+    const hid_t attribute = H5Aopen(group, "views", H5P_DEFAULT);
+    const std::int64_t views = 42;
+    EXPECT_GE(H5Awrite(attribute, H5T_NATIVE_INT64, &views), 0);
+    H5Aclose(attribute);
+    H5Gclose(group);
+  });
+  EXPECT_EQ(loadError(path),
+            path + ": attribute parameters/views is 42, expected 4 (the rows of views/directions)");
+}
+
 TEST_F(ModelBundleFiles, RefusesMissingDataset) {
   const std::string path =
       editedBundle("missing.h5", [](hid_t id) { H5Ldelete(id, "surface/normals", H5P_DEFAULT); });

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <utility>
 #include <vector>
 
 #include "view_direction_classification/core/error.h"
@@ -102,6 +104,30 @@ TEST_P(ViewSphereCounts, CellSamplesStayInTheCellAndMatchUniformDirectionsInIt) 
 
 INSTANTIATE_TEST_SUITE_P(IcosphereAndFibonacci, ViewSphereCounts,
                          ::testing::Values(12, 42, 162, 7, 100));
+
+TEST(Icosphere, IsAClosedOutwardUnitMeshWithTheSubdivisionCounts) {
+  for (int level = 0; level <= 3; ++level) {
+    const Icosphere sphere = makeIcosphere(level);
+    const int split = 1 << (2 * level);  // 4^level
+    EXPECT_EQ(sphere.vertices.size(), static_cast<std::size_t>(10 * split + 2));
+    ASSERT_EQ(sphere.faces.size(), static_cast<std::size_t>(20 * split));
+    for (const Eigen::Vector3d& v : sphere.vertices) EXPECT_NEAR(v.norm(), 1.0, 1e-12);
+    std::map<std::pair<int, int>, int> directed_edges;
+    for (const Eigen::Vector3i& f : sphere.faces) {
+      const Eigen::Vector3d &a = sphere.vertices[f[0]], &b = sphere.vertices[f[1]],
+                            &c = sphere.vertices[f[2]];
+      EXPECT_GT((b - a).cross(c - a).dot(a + b + c), 0.0) << "face not outward at level " << level;
+      for (int e = 0; e < 3; ++e) ++directed_edges[{f[e], f[(e + 1) % 3]}];
+    }
+    // Closed and consistently oriented: every edge is used once in each direction.
+    for (const auto& [edge, count] : directed_edges) {
+      EXPECT_EQ(count, 1);
+      EXPECT_EQ(directed_edges.count({edge.second, edge.first}), 1u);
+    }
+  }
+  EXPECT_THROW(makeIcosphere(-1), Error);
+  EXPECT_THROW(makeIcosphere(7), Error);
+}
 
 TEST(ViewSphere, DefaultIsTheLevelOneIcosphere) {
   const ViewSphere sphere;

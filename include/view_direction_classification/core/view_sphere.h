@@ -7,6 +7,16 @@
 
 namespace vdc {
 
+// The unit icosphere of subdivision level >= 0: the icosahedron's 12 vertices and 20 faces, each
+// level splitting every triangle into four at its edge midpoints pushed onto the sphere
+// (10 * 4^level + 2 vertices). Faces are counter-clockwise seen from outside.
+struct Icosphere {
+  std::vector<Eigen::Vector3d> vertices;
+  std::vector<Eigen::Vector3i> faces;
+};
+// Throws vdc::Error for a level outside [0, 6].
+Icosphere makeIcosphere(int level);
+
 // The M training viewing directions (METHOD.md section 2): near-uniform, deterministic unit
 // vectors. 12, 42, 162 and 642 give the vertices of the icosphere of subdivision level 0..3
 // (42 = level 1, the default); any other count gives a Fibonacci lattice. A direction's cell is
