@@ -119,7 +119,7 @@ InformativenessServerRos::InformativenessServerRos(ros::NodeHandle node,
   heatmap_publisher_ = private_node_.advertise<sensor_msgs::PointCloud2>("heatmap", 1, true);
   view_scores_publisher_ =
       private_node_.advertise<visualization_msgs::MarkerArray>("view_scores", 1, true);
-  publishLatchedTopics();
+  publishScoreTopics();
   if (republish_period > 0.0) {
     // Latching alone is not enough for rviz: tf2 drops a stamp-0 message that arrives before its
     // frame exists, for good, as soon as the frame appears (BufferCore::testTransformableRequests
@@ -142,7 +142,7 @@ InformativenessServerRos::InformativenessServerRos(ros::NodeHandle node,
            object_frame_.c_str(), fixed_frame_.c_str());
 }
 
-void InformativenessServerRos::publishLatchedTopics() {
+void InformativenessServerRos::publishScoreTopics() {
   const Eigen::VectorXf& g = model_->global_scores;
   heatmap_msg_ = colouredSurface(*model_, g, medianOfValid(g), object_frame_);
   heatmap_publisher_.publish(heatmap_msg_);

@@ -48,7 +48,9 @@ class InformativenessServerRos {
   // fixed_frame <- frame (empty = fixed_frame). Throws vdc::Error naming the frame if tf has no
   // such transform within tf_timeout.
   Eigen::Isometry3d lookupFixedFrom(const std::string& frame, const char* what) const;
-  void publishLatchedTopics();
+  // Builds the heatmap and view-score messages from the model (kept for the republish timer)
+  // and publishes them once, latched.
+  void publishScoreTopics();
 
   ros::NodeHandle node_, private_node_;
   std::string fixed_frame_, object_frame_;
