@@ -8,9 +8,8 @@
 #include <fstream>
 #include <string>
 
-#include <unistd.h>
-
 #include "geometry_test_meshes.h"
+#include "temporary_directory_test.h"
 #include "view_direction_classification/core/error.h"
 #include "view_direction_classification/core/mesh_check.h"
 
@@ -19,23 +18,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A fresh directory per test under the system temp dir, removed afterwards.
-class MeshIoTest : public ::testing::Test {
+class MeshIoTest : public test::TemporaryDirectoryTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("vdc_mesh_io_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   std::string write(const std::string& name, const std::string& content) const {
-    const std::string path = (dir_ / name).string();
-    std::ofstream(path, std::ios::binary) << content;
-    return path;
+    std::ofstream(path(name), std::ios::binary) << content;
+    return path(name);
   }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
 
   static std::string errorOf(const std::string& file) {
     try {
@@ -45,8 +33,6 @@ class MeshIoTest : public ::testing::Test {
     }
     return "";
   }
-
-  fs::path dir_;
 };
 
 // Unit cube as six quads: exercises triangulation and vertex joining.
@@ -197,7 +183,7 @@ TEST_F(MeshIoTest, GarbageFileIsRefusedNamingIt) {
 }
 
 TEST_F(MeshIoTest, DirectoryIsRefusedNamingIt) {
-  fs::create_directories(dir_ / "folder.obj");
+  fs::create_directories(directory() / "folder.obj");
   EXPECT_NE(errorOf(path("folder.obj")).find("folder.obj"), std::string::npos);
 }
 

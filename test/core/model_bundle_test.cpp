@@ -2,7 +2,6 @@
 
 #include <gtest/gtest.h>
 #include <hdf5.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -11,6 +10,7 @@
 #include <random>
 #include <string>
 
+#include "temporary_directory_test.h"
 #include "view_direction_classification/core/error.h"
 
 namespace vdc {
@@ -64,22 +64,12 @@ ModelBundle makeBundle() {
   return b;
 }
 
-class ModelBundleFiles : public ::testing::Test {
+class ModelBundleFiles : public test::TemporaryDirectoryTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("vdc_model_bundle_test_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string file(const std::string& name) const { return (dir_ / name).string(); }
-
   // A valid bundle at `name`, then `edit` applied to it through the raw HDF5 API.
   template <typename Edit>
   std::string editedBundle(const std::string& name, Edit edit) {
-    const std::string path = file(name);
+    const std::string path = this->path(name);
     saveModelBundle(makeBundle(), path);
     const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
     EXPECT_GE(id, 0);
@@ -97,8 +87,6 @@ class ModelBundleFiles : public ::testing::Test {
     }
     return "";
   }
-
-  fs::path dir_;
 };
 
 void replaceDataset(hid_t file, const char* name, hsize_t rows, hsize_t cols) {
@@ -115,8 +103,8 @@ void replaceDataset(hid_t file, const char* name, hsize_t rows, hsize_t cols) {
 
 TEST_F(ModelBundleFiles, RoundTripIsBitIdentical) {
   const ModelBundle saved = makeBundle();
-  saveModelBundle(saved, file("model.h5"));
-  const ModelBundle loaded = loadModelBundle(file("model.h5"));
+  saveModelBundle(saved, path("model.h5"));
+  const ModelBundle loaded = loadModelBundle(path("model.h5"));
 
   const TrainingParameters &a = saved.parameters, &b = loaded.parameters;
   EXPECT_EQ(a.mesh_name, b.mesh_name);
@@ -171,44 +159,44 @@ TEST_F(ModelBundleFiles, RoundTripIsBitIdentical) {
 
 TEST_F(ModelBundleFiles, SavingOverAnExistingBundleReplacesIt) {
   ModelBundle bundle = makeBundle();
-  saveModelBundle(bundle, file("model.h5"));
+  saveModelBundle(bundle, path("model.h5"));
   bundle.parameters.mesh_name = "second";
-  saveModelBundle(bundle, file("model.h5"));
-  EXPECT_EQ(loadModelBundle(file("model.h5")).parameters.mesh_name, "second");
-  EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1);
+  saveModelBundle(bundle, path("model.h5"));
+  EXPECT_EQ(loadModelBundle(path("model.h5")).parameters.mesh_name, "second");
+  EXPECT_EQ(entryCount(), 1);
 }
 
 TEST_F(ModelBundleFiles, RefusesMissingFile) {
-  EXPECT_EQ(loadError(file("absent.h5")), file("absent.h5") + ": no such file");
+  EXPECT_EQ(loadError(path("absent.h5")), path("absent.h5") + ": no such file");
 }
 
 TEST_F(ModelBundleFiles, RefusesEmptyFile) {
-  std::ofstream(file("empty.h5")).close();
-  const std::string message = loadError(file("empty.h5"));
-  EXPECT_EQ(message.rfind(file("empty.h5") + ": ", 0), 0u) << message;
+  std::ofstream(path("empty.h5")).close();
+  const std::string message = loadError(path("empty.h5"));
+  EXPECT_EQ(message.rfind(path("empty.h5") + ": ", 0), 0u) << message;
   EXPECT_NE(message.find("empty"), std::string::npos) << message;
 }
 
 TEST_F(ModelBundleFiles, RefusesTruncatedFileWithOneLineOnly) {
-  saveModelBundle(makeBundle(), file("model.h5"));
-  std::ifstream in(file("model.h5"), std::ios::binary);
+  saveModelBundle(makeBundle(), path("model.h5"));
+  std::ifstream in(path("model.h5"), std::ios::binary);
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  std::ofstream(file("half.h5"), std::ios::binary) << bytes.substr(0, bytes.size() / 2);
+  std::ofstream(path("half.h5"), std::ios::binary) << bytes.substr(0, bytes.size() / 2);
 
   ::testing::internal::CaptureStderr();
-  const std::string message = loadError(file("half.h5"));
+  const std::string message = loadError(path("half.h5"));
   const std::string printed = ::testing::internal::GetCapturedStderr();
-  EXPECT_EQ(message, file("half.h5") + ": truncated or not an HDF5 file");
+  EXPECT_EQ(message, path("half.h5") + ": truncated or not an HDF5 file");
   EXPECT_EQ(printed, "");  // HDF5's own error stack is silenced
 }
 
 TEST_F(ModelBundleFiles, RefusesTextFile) {
-  std::ofstream(file("notes.h5")) << "not hdf5 at all\n";
-  EXPECT_EQ(loadError(file("notes.h5")), file("notes.h5") + ": truncated or not an HDF5 file");
+  std::ofstream(path("notes.h5")) << "not hdf5 at all\n";
+  EXPECT_EQ(loadError(path("notes.h5")), path("notes.h5") + ": truncated or not an HDF5 file");
 }
 
 TEST_F(ModelBundleFiles, RefusesForeignHdf5File) {
-  const std::string path = file("foreign.h5");
+  const std::string path = this->path("foreign.h5");
   const hid_t id = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
   replaceDataset(id, "temperature", 3, 2);
   H5Fclose(id);
@@ -278,33 +266,33 @@ TEST_F(ModelBundleFiles, RefusesNaNInADataset) {
 }
 
 TEST_F(ModelBundleFiles, FailedSaveIntoMissingDirectoryLeavesNoFile) {
-  const std::string path = file("no/such/dir/model.h5");
+  const std::string path = this->path("no/such/dir/model.h5");
   EXPECT_THROW(saveModelBundle(makeBundle(), path), Error);
   EXPECT_FALSE(fs::exists(path));
-  EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 0);
+  EXPECT_EQ(entryCount(), 0);
 }
 
 TEST_F(ModelBundleFiles, InconsistentBundleIsNotSavedAndTheOldFileSurvives) {
-  saveModelBundle(makeBundle(), file("model.h5"));
+  saveModelBundle(makeBundle(), path("model.h5"));
   ModelBundle broken = makeBundle();
   broken.score_matrix.resize(6, 3);  // M = 4 views
   broken.score_matrix.setZero();
   try {
-    saveModelBundle(broken, file("model.h5"));
+    saveModelBundle(broken, path("model.h5"));
     FAIL() << "an inconsistent bundle was saved";
   } catch (const Error& e) {
-    EXPECT_EQ(std::string(e.what()), file("model.h5") + ": not saved: dataset " +
+    EXPECT_EQ(std::string(e.what()), path("model.h5") + ": not saved: dataset " +
                                          "informativeness/score_matrix has 3 columns, expected 4");
   }
-  EXPECT_NO_THROW(loadModelBundle(file("model.h5")));
-  EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1);
+  EXPECT_NO_THROW(loadModelBundle(path("model.h5")));
+  EXPECT_EQ(entryCount(), 1);
 }
 
 TEST_F(ModelBundleFiles, UntrainedClassifierIsNotSaved) {
   ModelBundle bundle = makeBundle();
   bundle.classifier = ViewClassifier();
-  EXPECT_THROW(saveModelBundle(bundle, file("model.h5")), Error);
-  EXPECT_FALSE(fs::exists(file("model.h5")));
+  EXPECT_THROW(saveModelBundle(bundle, path("model.h5")), Error);
+  EXPECT_FALSE(fs::exists(path("model.h5")));
 }
 
 }  // namespace

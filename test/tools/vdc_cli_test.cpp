@@ -4,15 +4,15 @@
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <sstream>
 #include <string>
+
+#include "../core/temporary_directory_test.h"
 
 namespace {
 
@@ -54,19 +54,7 @@ void expectOneFailureLine(const ToolRun& run) {
   EXPECT_EQ(run.output.find('\n'), run.output.size() - 1) << run.output;
 }
 
-class VdcCliTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    directory_ = fs::temp_directory_path() /
-                 ("vdc_cli_test_" + std::to_string(::getpid()) + "_" +
-                  ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(directory_);
-  }
-  void TearDown() override { fs::remove_all(directory_); }
-  std::string path(const std::string& name) const { return (directory_ / name).string(); }
-
-  fs::path directory_;
-};
+class VdcCliTest : public vdc::test::TemporaryDirectoryTest {};
 
 TEST_F(VdcCliTest, HelpExitsZeroAndListsTheSubcommands) {
   const ToolRun run = runVdc("--help");
@@ -115,12 +103,7 @@ TEST_F(VdcCliTest, AFailedTrainingLeavesAnExistingBundleUntouched) {
       runVdc("train --quick --mesh " + path("broken.ply") + " --out " + path("model.h5")));
   EXPECT_EQ(readFile(path("model.h5")), previous);
   // Nothing half-written is left beside it either.
-  int files = 0;
-  for (const auto& entry : fs::directory_iterator(directory_)) {
-    (void)entry;
-    ++files;
-  }
-  EXPECT_EQ(files, 2);  // model.h5 and broken.ply
+  EXPECT_EQ(entryCount(), 2);  // model.h5 and broken.ply
 }
 
 }  // namespace
