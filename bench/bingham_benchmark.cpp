@@ -2,11 +2,11 @@
 // normaliser with a libbingham-style interpolated lookup table.
 //
 //   make -C <build> vdc_bingham_benchmark && <build>/vdc_bingham_benchmark
-#include "view_direction_classification/core/bingham.h"
-#include "view_direction_classification/core/bingham_mixture.h"
-#include "view_direction_classification/core/bingham_normalizer.h"
-#include "view_direction_classification/core/quaternion.h"
-#include "view_direction_classification/core/view_measurement.h"
+#include "view_direction_classification/bingham/bingham.h"
+#include "view_direction_classification/bingham/bingham_mixture.h"
+#include "view_direction_classification/bingham/bingham_normalizer.h"
+#include "view_direction_classification/common/quaternion.h"
+#include "view_direction_classification/estimation/view_measurement.h"
 
 #include <benchmark/benchmark.h>
 

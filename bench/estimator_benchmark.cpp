@@ -27,14 +27,14 @@
 #include <string>
 #include <vector>
 
-#include "view_direction_classification/core/camera.h"
-#include "view_direction_classification/core/depth_renderer.h"
-#include "view_direction_classification/core/feature_selection.h"
-#include "view_direction_classification/core/fpfh_features.h"
-#include "view_direction_classification/core/model_bundle.h"
-#include "view_direction_classification/core/model_training.h"
-#include "view_direction_classification/core/mug_mesh.h"
-#include "view_direction_classification/core/orientation_estimator.h"
+#include "view_direction_classification/estimation/orientation_estimator.h"
+#include "view_direction_classification/features/fpfh_features.h"
+#include "view_direction_classification/geometry/camera.h"
+#include "view_direction_classification/geometry/depth_renderer.h"
+#include "view_direction_classification/geometry/mug_mesh.h"
+#include "view_direction_classification/learning/feature_selection.h"
+#include "view_direction_classification/training/model_bundle.h"
+#include "view_direction_classification/training/model_training.h"
 
 namespace {
 

@@ -7,10 +7,10 @@
 #include <random>
 #include <vector>
 
-#include "view_direction_classification/core/next_best_view.h"
-#include "view_direction_classification/core/quaternion.h"
-#include "view_direction_classification/core/view_measurement.h"
-#include "view_direction_classification/core/view_sphere.h"
+#include "view_direction_classification/common/quaternion.h"
+#include "view_direction_classification/estimation/view_measurement.h"
+#include "view_direction_classification/geometry/view_sphere.h"
+#include "view_direction_classification/planning/next_best_view.h"
 
 namespace {
 

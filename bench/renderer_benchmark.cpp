@@ -5,9 +5,9 @@
 #include <random>
 #include <vector>
 
-#include "view_direction_classification/core/camera.h"
-#include "view_direction_classification/core/depth_renderer.h"
-#include "view_direction_classification/core/mug_mesh.h"
+#include "view_direction_classification/geometry/camera.h"
+#include "view_direction_classification/geometry/depth_renderer.h"
+#include "view_direction_classification/geometry/mug_mesh.h"
 
 namespace {
 

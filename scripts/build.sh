@@ -9,7 +9,10 @@ export PATH=/usr/bin:/bin:$PATH
 
 if [[ ! -f "$build_dir/CMakeCache.txt" ]]; then
   # A failed configure caches bad values (e.g. a python without catkin_pkg): start clean.
+  # The install space is inside the build directory, as catkin_make's is inside its workspace;
+  # the install test (test/install) installs there and builds a dependent package against it.
   if ! cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      -DCMAKE_INSTALL_PREFIX="$(realpath -m "$build_dir")/install" \
       -DPYTHON_EXECUTABLE=/usr/bin/python3 -DPython3_EXECUTABLE=/usr/bin/python3 \
       -DCATKIN_ENABLE_TESTING=ON > "$build_dir.configure.log" 2>&1; then
     cat "$build_dir.configure.log" >&2

@@ -2,7 +2,7 @@
 
 #include <tf2_eigen/tf2_eigen.h>
 
-#include "view_direction_classification/core/quaternion.h"
+#include "view_direction_classification/common/quaternion.h"
 
 namespace vdc {
 namespace {

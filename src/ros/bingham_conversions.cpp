@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "view_direction_classification/core/error.h"
+#include "view_direction_classification/common/error.h"
 #include "view_direction_classification/ros/geometry_conversions.h"
 
 namespace vdc {

@@ -5,7 +5,7 @@
 #include <sstream>
 #include <string>
 
-#include "view_direction_classification/core/error.h"
+#include "view_direction_classification/common/error.h"
 
 namespace vdc {
 namespace {

@@ -4,7 +4,7 @@
 #include <sstream>
 #include <vector>
 
-#include "view_direction_classification/core/error.h"
+#include "view_direction_classification/common/error.h"
 
 namespace vdc {
 namespace {

@@ -5,7 +5,7 @@
 #include <Eigen/Core>
 #include <string>
 
-#include "view_direction_classification/core/orientation_estimator.h"
+#include "view_direction_classification/estimation/orientation_estimator.h"
 
 namespace vdc {
 

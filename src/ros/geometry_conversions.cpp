@@ -5,8 +5,8 @@
 #include <sstream>
 #include <string>
 
-#include "view_direction_classification/core/error.h"
-#include "view_direction_classification/core/quaternion.h"
+#include "view_direction_classification/common/error.h"
+#include "view_direction_classification/common/quaternion.h"
 
 namespace vdc {
 

@@ -14,12 +14,12 @@
 #include <utility>
 #include <vector>
 
-#include "view_direction_classification/core/error.h"
-#include "view_direction_classification/core/heatmap_colours.h"
-#include "view_direction_classification/core/quaternion.h"
+#include "view_direction_classification/common/error.h"
+#include "view_direction_classification/common/quaternion.h"
 #include "view_direction_classification/ros/bingham_conversions.h"
 #include "view_direction_classification/ros/cloud_conversions.h"
 #include "view_direction_classification/ros/geometry_conversions.h"
+#include "view_direction_classification/visualisation/heatmap_colours.h"
 
 namespace vdc {
 namespace {

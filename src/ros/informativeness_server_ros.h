@@ -16,13 +16,13 @@
 #include <optional>
 #include <string>
 
-#include "view_direction_classification/core/bingham_mixture.h"
-#include "view_direction_classification/core/model_bundle.h"
-#include "view_direction_classification/core/next_best_view.h"
+#include "view_direction_classification/bingham/bingham_mixture.h"
+#include "view_direction_classification/planning/next_best_view.h"
+#include "view_direction_classification/training/model_bundle.h"
 
 namespace vdc {
 
-// The informativeness server node (ARCHITECTURE.md, "Nodes"): serves a model bundle's view and
+// The informativeness server node (doc/nodes.md): serves a model bundle's view and
 // surface informativeness. Latched `~heatmap` (the surface set coloured by the global score) and
 // `~view_scores` (the training directions coloured by their view score), re-sent every
 // republish_period; services `~get_heatmap` and `~next_best_view`; tracks the belief published on

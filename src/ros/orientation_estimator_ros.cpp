@@ -11,12 +11,12 @@
 #include <sstream>
 #include <utility>
 
-#include "view_direction_classification/core/error.h"
-#include "view_direction_classification/core/model_bundle.h"
+#include "view_direction_classification/common/error.h"
 #include "view_direction_classification/ros/belief_markers.h"
 #include "view_direction_classification/ros/bingham_conversions.h"
 #include "view_direction_classification/ros/cloud_conversions.h"
 #include "view_direction_classification/ros/geometry_conversions.h"
+#include "view_direction_classification/training/model_bundle.h"
 
 namespace vdc {
 namespace {

@@ -18,11 +18,11 @@
 #include <thread>
 
 #include "estimator_ros_parameters.h"
-#include "view_direction_classification/core/orientation_estimator.h"
+#include "view_direction_classification/estimation/orientation_estimator.h"
 
 namespace vdc {
 
-// The orientation_estimator's ROS side (ARCHITECTURE.md, "Nodes"): reads the parameters, loads
+// The orientation_estimator's ROS side (doc/nodes.md): reads the parameters, loads
 // the model, subscribes `cloud`, looks up the camera pose with tf2, calls the core
 // OrientationEstimator and publishes ~estimate, ~pose, ~markers and the object's tf (re-sent at
 // ~tf_rate); serves ~reset and reports diagnostics. The same class runs in the node binary and in

@@ -9,11 +9,11 @@
 #include <string>
 #include <utility>
 
-#include "view_direction_classification/core/camera.h"
-#include "view_direction_classification/core/error.h"
-#include "view_direction_classification/core/mesh_io.h"
-#include "view_direction_classification/core/mug_mesh.h"
-#include "view_direction_classification/core/visibility_crop.h"
+#include "view_direction_classification/common/error.h"
+#include "view_direction_classification/geometry/camera.h"
+#include "view_direction_classification/geometry/mesh_io.h"
+#include "view_direction_classification/geometry/mug_mesh.h"
+#include "view_direction_classification/geometry/visibility_crop.h"
 
 namespace vdc {
 namespace {

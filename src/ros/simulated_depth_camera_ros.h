@@ -12,12 +12,12 @@
 #include <string>
 #include <vector>
 
-#include "view_direction_classification/core/depth_noise.h"
-#include "view_direction_classification/core/depth_renderer.h"
+#include "view_direction_classification/geometry/depth_noise.h"
+#include "view_direction_classification/geometry/depth_renderer.h"
 
 namespace vdc {
 
-// The simulated depth camera node (ARCHITECTURE.md, "Nodes"): renders a mesh placed at a fixed
+// The simulated depth camera node (doc/nodes.md): renders a mesh placed at a fixed
 // pose in fixed_frame with the training renderer and publishes the organised cloud `~cloud` in
 // the camera's optical frame at `rate`, with the camera's tf (fixed_frame -> camera_frame) at the
 // same stamp, and optionally the object's ground-truth tf for evaluation. `~move_to` moves it.

@@ -1,4 +1,4 @@
-// `vdc evaluate --model B.h5 --mesh M --out DIR`: the paper's figure-4 protocol (METHOD.md
+// `vdc evaluate --model B.h5 --mesh M --out DIR`: the paper's figure-4 protocol (doc/method.md
 // section 11) with the online estimator, per planner and visibility setting, optionally beside the
 // single-view PPF baseline on the same views. Writes DIR/errors.csv, DIR/summary.json and, through
 // scripts/plot_evaluation.py, one PNG per planner (and one comparing planners).
@@ -22,13 +22,13 @@
 #include "commands.h"
 #include "progress_bar.h"
 #include "python_script.h"
-#include "view_direction_classification/core/error.h"
-#include "view_direction_classification/core/evaluation.h"
-#include "view_direction_classification/core/mesh_io.h"
-#include "view_direction_classification/core/model_bundle.h"
-#include "view_direction_classification/core/model_training.h"
-#include "view_direction_classification/core/mug_mesh.h"
-#include "view_direction_classification/core/ppf_baseline.h"
+#include "view_direction_classification/common/error.h"
+#include "view_direction_classification/evaluation/evaluation.h"
+#include "view_direction_classification/evaluation/ppf_baseline.h"
+#include "view_direction_classification/geometry/mesh_io.h"
+#include "view_direction_classification/geometry/mug_mesh.h"
+#include "view_direction_classification/training/model_bundle.h"
+#include "view_direction_classification/training/model_training.h"
 
 namespace vdc::tools {
 
@@ -344,7 +344,7 @@ void addEvaluateCommand(CLI::App& app) {
   evaluate->add_option("--threads", s.threads, "OpenMP threads (0: all cores)")
       ->capture_default_str()
       ->check(CLI::Range(0, 256));
-  // The estimator's tuning knobs (METHOD.md: tune every default with this evaluation).
+  // The estimator's tuning knobs (every default was tuned with this evaluation: doc/method.md, "Defaults").
   evaluate
       ->add_option("--n-feat", s.estimator.n_feat,
                    "most certain features summed per view; 0: the model's value")

@@ -11,10 +11,10 @@
 
 #include "commands.h"
 #include "python_script.h"
-#include "view_direction_classification/core/error.h"
-#include "view_direction_classification/core/heatmap_colours.h"
-#include "view_direction_classification/core/model_bundle.h"
-#include "view_direction_classification/core/surface_splat_renderer.h"
+#include "view_direction_classification/common/error.h"
+#include "view_direction_classification/training/model_bundle.h"
+#include "view_direction_classification/visualisation/heatmap_colours.h"
+#include "view_direction_classification/visualisation/surface_splat_renderer.h"
 
 namespace vdc::tools {
 

@@ -7,7 +7,7 @@
 #include <memory>
 
 #include "commands.h"
-#include "view_direction_classification/core/model_bundle.h"
+#include "view_direction_classification/training/model_bundle.h"
 
 namespace vdc::tools {
 

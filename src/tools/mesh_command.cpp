@@ -4,9 +4,9 @@
 #include <memory>
 
 #include "commands.h"
-#include "view_direction_classification/core/mesh_check.h"
-#include "view_direction_classification/core/mesh_io.h"
-#include "view_direction_classification/core/mug_mesh.h"
+#include "view_direction_classification/geometry/mesh_check.h"
+#include "view_direction_classification/geometry/mesh_io.h"
+#include "view_direction_classification/geometry/mug_mesh.h"
 
 namespace vdc::tools {
 
@@ -26,7 +26,7 @@ void addMeshCommand(CLI::App& app) {
   auto* mesh = app.add_subcommand("mesh", "write the built-in object, or check a mesh file");
   mesh->require_subcommand(1);
 
-  auto* mug = mesh->add_subcommand("mug", "the built-in mug (METHOD.md section 1), in metres");
+  auto* mug = mesh->add_subcommand("mug", "the built-in mug (doc/method.md section 1), in metres");
   auto out = std::make_shared<std::string>();
   mug->add_option("--out", *out, "PLY file to write")->required();
   mug->callback([out] {

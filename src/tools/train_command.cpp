@@ -8,10 +8,10 @@
 
 #include "commands.h"
 #include "progress_bar.h"
-#include "view_direction_classification/core/mesh_io.h"
-#include "view_direction_classification/core/model_bundle.h"
-#include "view_direction_classification/core/model_training.h"
-#include "view_direction_classification/core/view_sphere.h"
+#include "view_direction_classification/geometry/mesh_io.h"
+#include "view_direction_classification/geometry/view_sphere.h"
+#include "view_direction_classification/training/model_bundle.h"
+#include "view_direction_classification/training/model_training.h"
 
 namespace vdc::tools {
 

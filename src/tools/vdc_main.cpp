@@ -7,7 +7,7 @@
 #include <iostream>
 
 #include "commands.h"
-#include "view_direction_classification/core/error.h"
+#include "view_direction_classification/common/error.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"vdc: viewing-direction classification for object orientation (offline tool)"};

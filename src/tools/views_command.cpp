@@ -12,12 +12,12 @@
 #include <vector>
 
 #include "commands.h"
-#include "view_direction_classification/core/depth_renderer.h"
-#include "view_direction_classification/core/fpfh_features.h"
-#include "view_direction_classification/core/mesh_check.h"
-#include "view_direction_classification/core/mesh_io.h"
-#include "view_direction_classification/core/mug_mesh.h"
-#include "view_direction_classification/core/view_sphere.h"
+#include "view_direction_classification/features/fpfh_features.h"
+#include "view_direction_classification/geometry/depth_renderer.h"
+#include "view_direction_classification/geometry/mesh_check.h"
+#include "view_direction_classification/geometry/mesh_io.h"
+#include "view_direction_classification/geometry/mug_mesh.h"
+#include "view_direction_classification/geometry/view_sphere.h"
 
 namespace vdc::tools {
 

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "view_direction_classification/core/quaternion.h"
+#include "view_direction_classification/common/quaternion.h"
 
 namespace vdc {
 namespace {

@@ -6,8 +6,8 @@
 #include <limits>
 #include <string>
 
-#include "../core/bingham_test_distributions.h"
-#include "view_direction_classification/core/error.h"
+#include "support/bingham_test_distributions.h"
+#include "view_direction_classification/common/error.h"
 
 namespace vdc {
 namespace {

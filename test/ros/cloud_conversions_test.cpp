@@ -7,7 +7,7 @@
 #include <limits>
 #include <string>
 
-#include "view_direction_classification/core/error.h"
+#include "view_direction_classification/common/error.h"
 
 namespace vdc {
 namespace {

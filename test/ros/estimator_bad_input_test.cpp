@@ -13,7 +13,7 @@
 #include <string>
 
 #include "mug_view_publisher.h"
-#include "view_direction_classification/core/quaternion.h"
+#include "view_direction_classification/common/quaternion.h"
 
 namespace vdc {
 namespace {

@@ -13,8 +13,8 @@
 #include <string>
 
 #include "mug_view_publisher.h"
-#include "view_direction_classification/core/quaternion.h"
-#include "view_direction_classification/core/rotation_error.h"
+#include "view_direction_classification/common/quaternion.h"
+#include "view_direction_classification/common/rotation_error.h"
 
 namespace vdc {
 namespace {

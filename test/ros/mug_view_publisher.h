@@ -18,9 +18,9 @@
 #include <string>
 #include <vector>
 
-#include "view_direction_classification/core/camera.h"
-#include "view_direction_classification/core/depth_renderer.h"
-#include "view_direction_classification/core/mesh_io.h"
+#include "view_direction_classification/geometry/camera.h"
+#include "view_direction_classification/geometry/depth_renderer.h"
+#include "view_direction_classification/geometry/mesh_io.h"
 
 namespace vdc {
 

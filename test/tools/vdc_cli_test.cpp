@@ -12,30 +12,17 @@
 #include <iterator>
 #include <string>
 
-#include "../core/temporary_directory_test.h"
+#include "support/command_run.h"
+#include "support/temporary_directory_test.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-struct ToolRun {
-  int exit_code = -1;  // -1: killed by a signal (a crash)
-  std::string output;  // stdout and stderr
-};
+using ToolRun = vdc::test::CommandRun;
 
 ToolRun runVdc(const std::string& arguments) {
-  const std::string command = std::string(VDC_EXECUTABLE) + " " + arguments + " 2>&1";
-  ToolRun run;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (pipe == nullptr) return run;
-  std::array<char, 4096> buffer;
-  std::size_t read = 0;
-  while ((read = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) {
-    run.output.append(buffer.data(), read);
-  }
-  const int status = pclose(pipe);
-  if (WIFEXITED(status)) run.exit_code = WEXITSTATUS(status);
-  return run;
+  return vdc::test::runCommand(std::string(VDC_EXECUTABLE) + " " + arguments);
 }
 
 std::string readFile(const fs::path& path) {

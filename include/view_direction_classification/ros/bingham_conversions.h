@@ -3,8 +3,8 @@
 #include <view_direction_classification/BinghamComponent.h>
 #include <view_direction_classification/BinghamMixture.h>
 
-#include "view_direction_classification/core/bingham.h"
-#include "view_direction_classification/core/bingham_mixture.h"
+#include "view_direction_classification/bingham/bingham.h"
+#include "view_direction_classification/bingham/bingham_mixture.h"
 
 namespace vdc {
 

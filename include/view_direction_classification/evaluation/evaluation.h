@@ -1,0 +1,144 @@
+#pragma once
+
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "view_direction_classification/geometry/camera.h"
+#include "view_direction_classification/geometry/depth_renderer.h"
+#include "view_direction_classification/training/model_bundle.h"
+#include "view_direction_classification/estimation/orientation_estimator.h"
+#include "view_direction_classification/common/progress.h"
+#include "view_direction_classification/geometry/triangle_mesh.h"
+
+namespace vdc {
+
+// The visibility "radius" of the unoccluded setting: every point is kept (no crop).
+constexpr double kAllVisible = std::numeric_limits<double>::infinity();
+
+// The paper's figure-4 protocol (doc/method.md section 11) and its extensions.
+struct EvaluationSettings {
+  int sequences = 20;
+  int views = 20;  // views fused per sequence
+  // Occlusion settings: radii [m] of the visible region around the anchors; kAllVisible keeps the
+  // whole cloud. Empty: the unoccluded setting alone.
+  std::vector<double> visibility_radii;
+  std::uint32_t seed = 1;  // of every random choice: object orientations, views, sensor noise
+  double distance = 0.6;   // camera to object origin [m]
+  bool noise = true;       // Kinect axial noise on every rendered view
+  // Random camera poses per sequence the planners choose from (>= views). The random planner
+  // takes the first `views` of them in order, so every planner starts from the same first view
+  // and sees the same candidates.
+  int candidates = 60;
+  // Hypotheses per belief component for information_gain (see beliefHypotheses).
+  int samples_per_component = 4;
+  int threads = 0;  // OpenMP threads; <= 0: all cores
+  EstimatorParameters estimator;
+};
+
+// Throws vdc::Error naming the first bad setting.
+void checkEvaluationSettings(const EvaluationSettings& settings);
+
+// How the views after the first are chosen.
+enum class EvaluationPlanner {
+  kRandom,           // the paper's protocol: the sequence's random views in order
+  kInformativeness,  // next_best_view.h utility 1 (the paper's proposal) over the candidates
+  kInformationGain,  // next_best_view.h utility 2 over the candidates
+};
+// "random", "informativeness" or "information_gain"; throws vdc::Error naming the accepted ones.
+EvaluationPlanner parseEvaluationPlanner(const std::string& name);
+std::string evaluationPlannerName(EvaluationPlanner planner);
+
+// "all" for kAllVisible, otherwise the radius in metres as the shortest exact decimal ("0.08").
+std::string visibilityLabel(double radius);
+// Inverse of visibilityLabel; throws vdc::Error for anything but "all" or a positive number.
+double parseVisibility(const std::string& label);
+
+// One random view sequence: the object's fixed true orientation q_WO (the object sits at the
+// world origin) and the candidate camera poses T_CO, each looking at the object origin from a
+// direction uniform on the whole sphere, with uniform random roll, at the settings' distance.
+struct EvaluationSequence {
+  Eigen::Vector4d world_from_object = Eigen::Vector4d(1, 0, 0, 0);  // q_WO (w, x, y, z)
+  std::vector<Eigen::Isometry3d> camera_from_object;                // settings.candidates poses
+  Eigen::Isometry3d worldFromObject() const;
+};
+// Deterministic in (settings.seed, sequence) alone, so any subset of sequences can be rerun.
+EvaluationSequence makeEvaluationSequence(const EvaluationSettings& settings, int sequence);
+
+// The cloud of one view: rendered in the camera frame with the noise of (seed, sequence,
+// candidate), so every planner and setting that picks this view sees the same noise, then
+// cropped to the points within `radius` of any anchor (object frame) unless radius is
+// kAllVisible.
+pcl::PointCloud<pcl::PointXYZ> renderEvaluationView(const DepthRenderer& renderer,
+                                                    const EvaluationSettings& settings,
+                                                    int sequence, int candidate,
+                                                    const Eigen::Isometry3d& camera_from_object,
+                                                    const std::vector<Eigen::Vector3d>& anchors,
+                                                    double radius);
+
+// Orientation errors of one visibility setting.
+struct SettingErrors {
+  double radius = kAllVisible;
+  double visible_fraction = 1.0;  // of the surface within radius of the anchors
+  Eigen::MatrixXd errors_deg;     // sequences x views: error after each view [deg], in [0, 180]
+  int skipped_views = 0;  // views without a result (estimator: no update; baseline: no pose)
+  // Median over sequences after each view (views entries).
+  Eigen::VectorXd medianPerView() const;
+};
+
+// The number of views after which the median error (medianPerView) falls under `threshold_deg`
+// and stays under it to the end of the sequence (a dip that comes back up does not count);
+// nullopt if the last view's median is not under it.
+std::optional<int> viewsUntilMedianStaysBelow(const Eigen::VectorXd& median_per_view,
+                                              double threshold_deg);
+
+struct EvaluationResult {
+  std::string planner;  // "random", ..., or the single-view method's name
+  std::vector<SettingErrors> settings;
+  double mean_update_ms = 0;    // per view: the estimator's update (or the single-view method)
+  UpdateTiming mean_stage_ms;   // the estimator's update by stage, per view (estimator only)
+  double mean_planning_ms = 0;  // per planned view (0 for random)
+  double mean_map_ms = 0;       // per view: the MAP search after the update (estimator only)
+};
+
+// Runs the protocol for one planner with the online estimator: per sequence and setting a fresh
+// OrientationEstimator fuses `views` views; after each the MAP error against the true q_WO is
+// recorded (rotationErrorDeg). The anchors (object frame) centre the visibility crop; any mesh
+// works. The (sequence, setting) runs are spread over OpenMP threads; each has its own
+// generators, so results do not depend on the thread count. Throws vdc::Error for bad settings,
+// a mesh or anchors that do not fit, or an estimator error.
+EvaluationResult evaluateEstimator(std::shared_ptr<const ModelBundle> model,
+                                   const TriangleMesh& mesh,
+                                   const std::vector<Eigen::Vector3d>& anchors,
+                                   EvaluationPlanner planner, const EvaluationSettings& settings,
+                                   const ProgressCallback& progress = {});
+
+// A single-view orientation method: camera-frame cloud in, T_CO out (empty: no estimate).
+using SingleViewMethod =
+    std::function<std::optional<Eigen::Isometry3d>(const pcl::PointCloud<pcl::PointXYZ>&)>;
+
+// The same views as the random planner's, each judged alone by `method` (e.g. the PPF baseline):
+// error of its orientation R_WC R_CO against q_WO. A view without an estimate counts as 180
+// degrees (the worst) and as skipped. Runs sequentially (methods need not be thread-safe);
+// mean_update_ms is the method's mean wall time per view.
+EvaluationResult evaluateSingleView(const SingleViewMethod& method, const std::string& name,
+                                    const TriangleMesh& mesh, const CameraIntrinsics& intrinsics,
+                                    const std::vector<Eigen::Vector3d>& anchors,
+                                    const EvaluationSettings& settings,
+                                    const ProgressCallback& progress = {});
+
+// errors.csv: header "planner,visibility,sequence,view,map_error_deg", then one row per
+// result, setting, sequence (0-based) and view (1-based: the number of views seen so far).
+void writeErrorsCsv(std::ostream& out, const std::vector<EvaluationResult>& results);
+
+}  // namespace vdc

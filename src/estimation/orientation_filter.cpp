@@ -1,0 +1,36 @@
+#include "view_direction_classification/estimation/orientation_filter.h"
+
+#include "view_direction_classification/common/error.h"
+
+namespace vdc {
+
+OrientationFilter::OrientationFilter(OrientationFilterOptions options)
+    : options_(std::move(options)) {
+  if (options_.entropy_samples < 1) {
+    throw Error("The orientation filter's entropy_samples must be at least 1.");
+  }
+  // Validates the reduction options now rather than at the first update.
+  reduce(belief_, options_.reduction);
+}
+
+void OrientationFilter::update(const BinghamMixture& measurement) {
+  // Products that reduce() would drop are never computed (the normalisers dominate the cost).
+  belief_ = reduce(multiply(belief_, measurement, options_.reduction.relative_weight_threshold),
+                   options_.reduction);
+  ++update_count_;
+}
+
+void OrientationFilter::reset() {
+  belief_ = BinghamMixture();
+  update_count_ = 0;
+}
+
+Eigen::Vector4d OrientationFilter::mapEstimate() const {
+  return vdc::mapEstimate(belief_, options_.map);
+}
+
+double OrientationFilter::entropy() const {
+  return belief_.entropy(options_.entropy_samples, options_.entropy_seed);
+}
+
+}  // namespace vdc

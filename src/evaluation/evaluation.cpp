@@ -1,0 +1,421 @@
+#include "view_direction_classification/evaluation/evaluation.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <random>
+#include <string>
+
+#include "view_direction_classification/common/error.h"
+#include "view_direction_classification/training/model_training.h"
+#include "view_direction_classification/planning/next_best_view.h"
+#include "view_direction_classification/common/quaternion.h"
+#include "view_direction_classification/common/rotation_error.h"
+#include "view_direction_classification/geometry/surface_sampling.h"
+#include "view_direction_classification/geometry/visibility_crop.h"
+
+namespace vdc {
+namespace {
+
+// Tags that keep the generators of different purposes independent for the same seed.
+constexpr std::uint32_t kSequenceStream = 0x5e9u;
+constexpr std::uint32_t kNoiseStream = 0x9015eu;
+// Spacing of the surface set the visible fractions are measured on (doc/method.md section 1).
+constexpr double kFractionSpacing = 0.002;
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
+}
+
+std::vector<double> radiiOf(const EvaluationSettings& settings) {
+  if (settings.visibility_radii.empty()) return {kAllVisible};
+  return settings.visibility_radii;
+}
+
+void checkAnchors(const std::vector<Eigen::Vector3d>& anchors, const EvaluationSettings& settings) {
+  bool cropped = false;
+  for (const double r : radiiOf(settings)) cropped = cropped || r != kAllVisible;
+  if (cropped && anchors.empty()) {
+    throw Error("the occlusion settings need at least one visibility anchor point");
+  }
+  for (const auto& anchor : anchors) {
+    if (!anchor.allFinite()) throw Error("a visibility anchor point is not finite");
+  }
+}
+
+std::vector<double> visibleFractions(const TriangleMesh& mesh,
+                                     const std::vector<Eigen::Vector3d>& anchors,
+                                     const EvaluationSettings& settings) {
+  const std::vector<double> radii = radiiOf(settings);
+  std::vector<double> fractions(radii.size(), 1.0);
+  bool cropped = false;
+  for (const double r : radii) cropped = cropped || r != kAllVisible;
+  if (!cropped) return fractions;
+  const SurfaceSamples surface = sampleSurface(mesh, kFractionSpacing, settings.seed);
+  for (std::size_t k = 0; k < radii.size(); ++k) {
+    if (radii[k] != kAllVisible) {
+      fractions[k] = surfaceFractionNearAnchors(surface, anchors, radii[k]);
+    }
+  }
+  return fractions;
+}
+
+// Index of the next candidate: the random planner takes them in order; a utility planner ranks
+// the unused candidates under the current belief and takes the best.
+int chooseCandidate(EvaluationPlanner planner, const NextBestViewPlanner* utilities,
+                    const OrientationEstimator& estimator, const EvaluationSequence& sequence,
+                    const std::vector<bool>& used, int view, const EvaluationSettings& settings) {
+  if (planner == EvaluationPlanner::kRandom || view == 0) return view;
+  const Eigen::Isometry3d world_from_object = sequence.worldFromObject();
+  std::vector<Eigen::Vector3d> positions;
+  std::vector<int> index_of;
+  for (std::size_t c = 0; c < sequence.camera_from_object.size(); ++c) {
+    if (used[c]) continue;
+    positions.push_back(world_from_object * sequence.camera_from_object[c].inverse().translation());
+    index_of.push_back(static_cast<int>(c));
+  }
+  PlanningScene scene;
+  // The planner knows only what the estimator knows: its position estimate and its belief.
+  scene.object_position = estimator.positionEstimate().value_or(Eigen::Vector3d::Zero());
+  scene.belief = estimator.belief();
+  scene.orientation = estimator.mapOrientation();
+  NextBestViewOptions options;
+  options.samples_per_component = settings.samples_per_component;
+  options.seed = settings.seed;
+  const ViewUtility utility = planner == EvaluationPlanner::kInformativeness
+                                  ? ViewUtility::kInformativeness
+                                  : ViewUtility::kInformationGain;
+  const std::vector<RankedCandidate> ranked =
+      rankCandidates(*utilities, positions, utility, scene, options);
+  return index_of[static_cast<std::size_t>(ranked.front().index)];
+}
+
+struct RunOutput {
+  std::vector<double> errors;
+  int skipped = 0;
+  double planning_ms = 0, map_ms = 0;
+  UpdateTiming stage_ms;  // sums
+  int planned = 0;
+};
+
+}  // namespace
+
+void checkEvaluationSettings(const EvaluationSettings& s) {
+  if (s.sequences < 1) {
+    throw Error("the evaluation needs at least one sequence, got " + std::to_string(s.sequences));
+  }
+  if (s.views < 1) {
+    throw Error("the evaluation needs at least one view per sequence, got " +
+                std::to_string(s.views));
+  }
+  if (s.candidates < s.views) {
+    throw Error("the evaluation needs at least as many candidate views (" +
+                std::to_string(s.candidates) + ") as views per sequence (" +
+                std::to_string(s.views) + ")");
+  }
+  if (!(s.distance > 0.0) || !std::isfinite(s.distance)) {
+    throw Error("the evaluation distance must be positive and finite, got " +
+                std::to_string(s.distance) + " m");
+  }
+  for (const double r : s.visibility_radii) {
+    if (!(r > 0.0)) {  // also refuses NaN; infinity is kAllVisible
+      throw Error("a visibility radius must be positive, got " + std::to_string(r) + " m");
+    }
+  }
+  if (s.samples_per_component < 0) {
+    throw Error("samples per component must not be negative, got " +
+                std::to_string(s.samples_per_component));
+  }
+}
+
+EvaluationPlanner parseEvaluationPlanner(const std::string& name) {
+  if (name == "random") return EvaluationPlanner::kRandom;
+  if (name == "informativeness") return EvaluationPlanner::kInformativeness;
+  if (name == "information_gain") return EvaluationPlanner::kInformationGain;
+  throw Error("unknown planner '" + name +
+              "'; expected random, informativeness or information_gain");
+}
+
+std::string evaluationPlannerName(EvaluationPlanner planner) {
+  switch (planner) {
+    case EvaluationPlanner::kRandom:
+      return "random";
+    case EvaluationPlanner::kInformativeness:
+      return "informativeness";
+    case EvaluationPlanner::kInformationGain:
+      return "information_gain";
+  }
+  return "unknown";
+}
+
+std::string visibilityLabel(double radius) {
+  if (radius == kAllVisible) return "all";
+  char text[64];
+  for (int digits = 1; digits <= 17; ++digits) {
+    std::snprintf(text, sizeof(text), "%.*g", digits, radius);
+    if (std::strtod(text, nullptr) == radius) break;
+  }
+  return text;
+}
+
+double parseVisibility(const std::string& label) {
+  if (label == "all") return kAllVisible;
+  char* end = nullptr;
+  const double radius = std::strtod(label.c_str(), &end);
+  if (label.empty() || end != label.c_str() + label.size() || !(radius > 0.0) ||
+      !std::isfinite(radius)) {
+    throw Error("visibility '" + label + "' is neither 'all' nor a positive radius in metres");
+  }
+  return radius;
+}
+
+Eigen::Isometry3d EvaluationSequence::worldFromObject() const {
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.linear() = quaternionToRotationMatrix(world_from_object);
+  return pose;
+}
+
+EvaluationSequence makeEvaluationSequence(const EvaluationSettings& settings, int sequence) {
+  checkEvaluationSettings(settings);
+  std::seed_seq seeds{settings.seed, kSequenceStream, static_cast<std::uint32_t>(sequence)};
+  std::mt19937 rng(seeds);
+  std::normal_distribution<double> gaussian;
+  std::uniform_real_distribution<double> angle(0.0, 2.0 * M_PI);
+  EvaluationSequence result;
+  // Normalised Gaussian vectors are uniform on the sphere (S^3 for the orientation: a uniform
+  // random rotation). A zero vector has probability zero; redraw to be safe.
+  Eigen::Vector4d q;
+  do {
+    q = Eigen::Vector4d(gaussian(rng), gaussian(rng), gaussian(rng), gaussian(rng));
+  } while (q.norm() < 1e-9);
+  q.normalize();
+  if (q(0) < 0) q = -q;
+  result.world_from_object = q;
+  result.camera_from_object.reserve(static_cast<std::size_t>(settings.candidates));
+  for (int c = 0; c < settings.candidates; ++c) {
+    Eigen::Vector3d d;
+    do {
+      d = Eigen::Vector3d(gaussian(rng), gaussian(rng), gaussian(rng));
+    } while (d.norm() < 1e-9);
+    const double roll = angle(rng);
+    result.camera_from_object.push_back(cameraFromObject(d.normalized(), settings.distance, roll));
+  }
+  return result;
+}
+
+pcl::PointCloud<pcl::PointXYZ> renderEvaluationView(const DepthRenderer& renderer,
+                                                    const EvaluationSettings& settings,
+                                                    int sequence, int candidate,
+                                                    const Eigen::Isometry3d& camera_from_object,
+                                                    const std::vector<Eigen::Vector3d>& anchors,
+                                                    double radius) {
+  std::seed_seq seeds{settings.seed, kNoiseStream, static_cast<std::uint32_t>(sequence),
+                      static_cast<std::uint32_t>(candidate)};
+  std::mt19937 rng(seeds);
+  const DepthNoiseModel noise{settings.noise};
+  pcl::PointCloud<pcl::PointXYZ> cloud = renderer.render(camera_from_object, noise, &rng);
+  if (radius == kAllVisible) return cloud;
+  return cropToAnchors(cloud, camera_from_object, anchors, radius);
+}
+
+std::optional<int> viewsUntilMedianStaysBelow(const Eigen::VectorXd& median_per_view,
+                                              double threshold_deg) {
+  std::optional<int> first;
+  for (Eigen::Index v = median_per_view.size() - 1; v >= 0 && median_per_view(v) < threshold_deg;
+       --v) {
+    first = static_cast<int>(v) + 1;
+  }
+  return first;
+}
+
+Eigen::VectorXd SettingErrors::medianPerView() const {
+  Eigen::VectorXd medians(errors_deg.cols());
+  for (Eigen::Index v = 0; v < errors_deg.cols(); ++v) {
+    std::vector<double> column(errors_deg.col(v).data(),
+                               errors_deg.col(v).data() + errors_deg.rows());
+    std::sort(column.begin(), column.end());
+    const std::size_t n = column.size();
+    medians(v) = n == 0 ? 0.0 : (n % 2 ? column[n / 2] : 0.5 * (column[n / 2 - 1] + column[n / 2]));
+  }
+  return medians;
+}
+
+EvaluationResult evaluateEstimator(std::shared_ptr<const ModelBundle> model,
+                                   const TriangleMesh& mesh,
+                                   const std::vector<Eigen::Vector3d>& anchors,
+                                   EvaluationPlanner planner, const EvaluationSettings& settings,
+                                   const ProgressCallback& progress) {
+  checkEvaluationSettings(settings);
+  checkAnchors(anchors, settings);
+  if (!model) throw Error("the evaluation needs a model bundle");
+  // Fails early (not inside the threads) for bad estimator parameters.
+  { const OrientationEstimator check(model, settings.estimator); }
+  const DepthRenderer renderer(mesh, intrinsicsOf(model->parameters));
+  std::unique_ptr<NextBestViewPlanner> utilities;
+  if (planner != EvaluationPlanner::kRandom) {
+    utilities = std::make_unique<NextBestViewPlanner>(model);
+  }
+  const std::vector<double> radii = radiiOf(settings);
+  const std::vector<double> fractions = visibleFractions(mesh, anchors, settings);
+
+  const int settings_count = static_cast<int>(radii.size());
+  const int runs = settings.sequences * settings_count;
+  const std::size_t total_views = static_cast<std::size_t>(runs) * settings.views;
+  std::vector<RunOutput> outputs(static_cast<std::size_t>(runs));
+  std::size_t done_views = 0;
+  std::string failure;
+  const std::string stage = "evaluating " + evaluationPlannerName(planner);
+  reportProgress(progress, stage, 0, total_views);
+
+  const int threads = settings.threads > 0 ? settings.threads : omp_get_max_threads();
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+  for (int run = 0; run < runs; ++run) {
+    const int sequence_index = run / settings_count;
+    const double radius = radii[static_cast<std::size_t>(run % settings_count)];
+    RunOutput& out = outputs[static_cast<std::size_t>(run)];
+    try {
+      const EvaluationSequence sequence = makeEvaluationSequence(settings, sequence_index);
+      const Eigen::Isometry3d world_from_object = sequence.worldFromObject();
+      OrientationEstimator estimator(model, settings.estimator);
+      std::vector<bool> used(sequence.camera_from_object.size(), false);
+      for (int v = 0; v < settings.views; ++v) {
+        const auto plan_start = std::chrono::steady_clock::now();
+        const int candidate =
+            chooseCandidate(planner, utilities.get(), estimator, sequence, used, v, settings);
+        if (planner != EvaluationPlanner::kRandom && v > 0) {
+          out.planning_ms += millisecondsSince(plan_start);
+          ++out.planned;
+        }
+        used[static_cast<std::size_t>(candidate)] = true;
+        const Eigen::Isometry3d& camera_from_object =
+            sequence.camera_from_object[static_cast<std::size_t>(candidate)];
+        const auto cloud = renderEvaluationView(renderer, settings, sequence_index, candidate,
+                                                camera_from_object, anchors, radius);
+        const ViewUpdate update =
+            estimator.update(cloud, world_from_object * camera_from_object.inverse());
+        out.stage_ms += update.timing;
+        if (!update.updated) ++out.skipped;
+        const auto map_start = std::chrono::steady_clock::now();
+        const Eigen::Vector4d map = estimator.mapOrientation();
+        out.map_ms += millisecondsSince(map_start);
+        out.errors.push_back(rotationErrorDeg(map, sequence.world_from_object));
+#pragma omp critical(vdc_evaluation_progress)
+        reportProgress(progress, stage, ++done_views, total_views);
+      }
+    } catch (const std::exception& error) {
+#pragma omp critical(vdc_evaluation_failure)
+      if (failure.empty()) failure = error.what();
+    }
+  }
+  if (!failure.empty()) throw Error("the evaluation failed: " + failure);
+
+  EvaluationResult result;
+  result.planner = evaluationPlannerName(planner);
+  double planning_ms = 0, map_ms = 0;
+  int planned = 0;
+  for (int k = 0; k < settings_count; ++k) {
+    SettingErrors setting;
+    setting.radius = radii[static_cast<std::size_t>(k)];
+    setting.visible_fraction = fractions[static_cast<std::size_t>(k)];
+    setting.errors_deg.resize(settings.sequences, settings.views);
+    for (int s = 0; s < settings.sequences; ++s) {
+      const RunOutput& out = outputs[static_cast<std::size_t>(s * settings_count + k)];
+      for (int v = 0; v < settings.views; ++v) {
+        setting.errors_deg(s, v) = out.errors[static_cast<std::size_t>(v)];
+      }
+      setting.skipped_views += out.skipped;
+      planning_ms += out.planning_ms;
+      map_ms += out.map_ms;
+      result.mean_stage_ms += out.stage_ms;
+      planned += out.planned;
+    }
+    result.settings.push_back(std::move(setting));
+  }
+  const double views_done = static_cast<double>(total_views);
+  result.mean_stage_ms /= views_done;
+  result.mean_update_ms = result.mean_stage_ms.total;
+  result.mean_map_ms = map_ms / views_done;
+  result.mean_planning_ms = planned > 0 ? planning_ms / planned : 0.0;
+  return result;
+}
+
+EvaluationResult evaluateSingleView(const SingleViewMethod& method, const std::string& name,
+                                    const TriangleMesh& mesh, const CameraIntrinsics& intrinsics,
+                                    const std::vector<Eigen::Vector3d>& anchors,
+                                    const EvaluationSettings& settings,
+                                    const ProgressCallback& progress) {
+  checkEvaluationSettings(settings);
+  checkAnchors(anchors, settings);
+  if (!method) throw Error("the single-view evaluation needs a method");
+  const DepthRenderer renderer(mesh, intrinsics);
+  const std::vector<double> radii = radiiOf(settings);
+  const std::vector<double> fractions = visibleFractions(mesh, anchors, settings);
+  const std::size_t total_views = radii.size() * settings.sequences * settings.views;
+  const std::string stage = "evaluating " + name;
+  reportProgress(progress, stage, 0, total_views);
+
+  EvaluationResult result;
+  result.planner = name;
+  for (std::size_t k = 0; k < radii.size(); ++k) {
+    SettingErrors setting;
+    setting.radius = radii[k];
+    setting.visible_fraction = fractions[k];
+    setting.errors_deg.resize(settings.sequences, settings.views);
+    result.settings.push_back(std::move(setting));
+  }
+  double method_ms = 0;
+  std::size_t done = 0;
+  for (int s = 0; s < settings.sequences; ++s) {
+    const EvaluationSequence sequence = makeEvaluationSequence(settings, s);
+    for (int v = 0; v < settings.views; ++v) {
+      const Eigen::Isometry3d& camera_from_object =
+          sequence.camera_from_object[static_cast<std::size_t>(v)];
+      for (std::size_t k = 0; k < radii.size(); ++k) {
+        SettingErrors& setting = result.settings[k];
+        const auto cloud =
+            renderEvaluationView(renderer, settings, s, v, camera_from_object, anchors, radii[k]);
+        const auto start = std::chrono::steady_clock::now();
+        const std::optional<Eigen::Isometry3d> estimate = method(cloud);
+        method_ms += millisecondsSince(start);
+        double error = 180.0;
+        if (estimate && estimate->matrix().allFinite()) {
+          // R_CO estimated, R_CO true: compare them in the camera frame (the same angle as
+          // between R_WC R_CO and q_WO, R_WC being known exactly).
+          error = rotationErrorDeg(quaternionFromRotationMatrix(estimate->linear()),
+                                   quaternionFromRotationMatrix(camera_from_object.linear()));
+        } else {
+          ++setting.skipped_views;
+        }
+        setting.errors_deg(s, v) = error;
+        reportProgress(progress, stage, ++done, total_views);
+      }
+    }
+  }
+  result.mean_update_ms = method_ms / static_cast<double>(total_views);
+  return result;
+}
+
+void writeErrorsCsv(std::ostream& out, const std::vector<EvaluationResult>& results) {
+  out << "planner,visibility,sequence,view,map_error_deg\n";
+  char error[32];
+  for (const auto& result : results) {
+    for (const auto& setting : result.settings) {
+      const std::string visibility = visibilityLabel(setting.radius);
+      for (Eigen::Index s = 0; s < setting.errors_deg.rows(); ++s) {
+        for (Eigen::Index v = 0; v < setting.errors_deg.cols(); ++v) {
+          std::snprintf(error, sizeof(error), "%.4f", setting.errors_deg(s, v));
+          out << result.planner << ',' << visibility << ',' << s << ',' << v + 1 << ',' << error
+              << '\n';
+        }
+      }
+    }
+  }
+}
+
+}  // namespace vdc
