@@ -9,7 +9,7 @@ Topics and services (relative names, remapped in launch/demo.launch):
   camera_cloud (in, PointCloud2)    the simulated camera's ~cloud
   ~view_cloud (out, PointCloud2)    the estimator's input: one cloud per planned view
   estimate (in, BinghamMixture)     the estimator's ~estimate
-Private parameters: see PARAMETERS below (each documented in the README's "Demo" section).
+Private parameters: see PARAMETERS below (also listed in doc/nodes.md, "planner_loop.py").
 """
 import csv
 import math

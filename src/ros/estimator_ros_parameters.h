@@ -10,7 +10,7 @@
 namespace vdc {
 
 // Everything the orientation_estimator node reads from its private parameters
-// (config/estimator.yaml documents each one; the README lists them).
+// (config/estimator.yaml documents each one; doc/nodes.md lists them).
 struct EstimatorRosParameters {
   std::string model_path;               // model bundle (.h5), required
   std::string fixed_frame = "world";    // frame of the estimate (the object must be static in it)

@@ -38,7 +38,8 @@ MugPart partOf(const Eigen::Vector3d& p) {
 class PaperFindingsTest : public ::testing::Test {
  protected:
   // 42 directions as in the paper; 6 clouds per direction and the thesis' K-means routing
-  // keep training to a few minutes while the findings are stable (see README, "Paper findings").
+  // keep training to a few minutes while the findings are stable (doc/evaluation.md, "The paper's
+  // findings on the mug").
   static void SetUpTestSuite() {
     TrainingParameters parameters;
     parameters.mesh_name = "mug";

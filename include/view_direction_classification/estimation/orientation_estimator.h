@@ -21,14 +21,15 @@ namespace vdc {
 struct EstimatorParameters {
   int n_feat = 0;      // most certain features summed per view; <= 0: the bundle's value
   double kappa = 0.0;  // girdle concentration; <= 0: defaultViewConcentration(view spacing)
-  // K_max of the belief. the paper's method starts at 200; on the evaluation (10 x 12 views, all and
-  // r_vis 5 cm) 50 gives the same median errors at a quarter of the fusion time.
+  // K_max of the belief. The first value was 200; on the evaluation (10 x 12 views, all and r_vis
+  // 5 cm) 50 gives the same median errors at a quarter of the fusion time (doc/method.md,
+  // "Defaults").
   int max_components = 50;
   int min_features = 10;     // a view with fewer features is skipped (no update)
   double min_weight = 1e-3;  // measurement components below this p_sum are dropped
   // Belief components lighter than this fraction of the heaviest are dropped after each fusion
-  // (and their products never computed): the starting value 1e-6. 1e-3 gave the same median errors on
-  // the evaluation but no faster updates in the estimator benchmark (fewer merges, more refits).
+  // (and their products never computed). 1e-3 gave the same median errors on the evaluation but
+  // no faster updates in the estimator benchmark (fewer merges, more refits), so it stays 1e-6.
   double belief_weight_floor = 1e-6;
   // Segmentation of each cloud. Its roi_centre is a point of the fixed frame (where an object
   // stands still while the camera moves); update() moves it into each cloud's frame.

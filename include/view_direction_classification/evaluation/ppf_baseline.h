@@ -13,7 +13,7 @@
 namespace vdc {
 
 // Settings of the single-view baseline (Drost et al. 2010 point-pair features as implemented by
-// PCL). Defaults measured on the built-in mug at 0.6 m (README, "vdc evaluate").
+// PCL). Defaults measured on the built-in mug at 0.6 m (doc/evaluation.md, "Baseline").
 struct PpfParameters {
   // The model: stratified surface samples with their mesh normals. PCL's training and matching
   // grow faster than O(n^2) in their number: 1 cm gives 581 points on the mug (training ~2.5 s,

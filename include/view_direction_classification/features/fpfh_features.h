@@ -22,7 +22,7 @@ struct FeatureParameters {
   // samples the surface every ~1.1 mm, so a 3 cm support holds ~2000 points and FPFH costs
   // seconds per view. On the mug (42 x 20 views, 4 clusters) a 7 mm surface keeps held-out
   // accuracy (0.190; 0.193 at 5 mm, 0.171 at 3 mm) and the evaluation's errors at an eighth of
-  // the 3 mm cost (README, "Estimator latency").
+  // the 3 mm cost (doc/method.md, "Defaults"; doc/performance.md).
   double support_voxel = 0.007;
   int min_neighbours = 10;  // keypoints with fewer cloud points within fpfh_radius drop
 };
