@@ -5,19 +5,17 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <exception>
 #include <random>
 #include <string>
 
 #include "view_direction_classification/common/error.h"
-#include "view_direction_classification/training/model_training.h"
-#include "view_direction_classification/planning/next_best_view.h"
 #include "view_direction_classification/common/quaternion.h"
 #include "view_direction_classification/common/rotation_error.h"
 #include "view_direction_classification/geometry/surface_sampling.h"
 #include "view_direction_classification/geometry/visibility_crop.h"
+#include "view_direction_classification/planning/next_best_view.h"
+#include "view_direction_classification/training/model_training.h"
 
 namespace vdc {
 namespace {
@@ -134,14 +132,6 @@ void checkEvaluationSettings(const EvaluationSettings& s) {
   }
 }
 
-EvaluationPlanner parseEvaluationPlanner(const std::string& name) {
-  if (name == "random") return EvaluationPlanner::kRandom;
-  if (name == "informativeness") return EvaluationPlanner::kInformativeness;
-  if (name == "information_gain") return EvaluationPlanner::kInformationGain;
-  throw Error("unknown planner '" + name +
-              "'; expected random, informativeness or information_gain");
-}
-
 std::string evaluationPlannerName(EvaluationPlanner planner) {
   switch (planner) {
     case EvaluationPlanner::kRandom:
@@ -152,27 +142,6 @@ std::string evaluationPlannerName(EvaluationPlanner planner) {
       return "information_gain";
   }
   return "unknown";
-}
-
-std::string visibilityLabel(double radius) {
-  if (radius == kAllVisible) return "all";
-  char text[64];
-  for (int digits = 1; digits <= 17; ++digits) {
-    std::snprintf(text, sizeof(text), "%.*g", digits, radius);
-    if (std::strtod(text, nullptr) == radius) break;
-  }
-  return text;
-}
-
-double parseVisibility(const std::string& label) {
-  if (label == "all") return kAllVisible;
-  char* end = nullptr;
-  const double radius = std::strtod(label.c_str(), &end);
-  if (label.empty() || end != label.c_str() + label.size() || !(radius > 0.0) ||
-      !std::isfinite(radius)) {
-    throw Error("visibility '" + label + "' is neither 'all' nor a positive radius in metres");
-  }
-  return radius;
 }
 
 Eigen::Isometry3d EvaluationSequence::worldFromObject() const {
@@ -399,23 +368,6 @@ EvaluationResult evaluateSingleView(const SingleViewMethod& method, const std::s
   }
   result.mean_update_ms = method_ms / static_cast<double>(total_views);
   return result;
-}
-
-void writeErrorsCsv(std::ostream& out, const std::vector<EvaluationResult>& results) {
-  out << "planner,visibility,sequence,view,map_error_deg\n";
-  char error[32];
-  for (const auto& result : results) {
-    for (const auto& setting : result.settings) {
-      const std::string visibility = visibilityLabel(setting.radius);
-      for (Eigen::Index s = 0; s < setting.errors_deg.rows(); ++s) {
-        for (Eigen::Index v = 0; v < setting.errors_deg.cols(); ++v) {
-          std::snprintf(error, sizeof(error), "%.4f", setting.errors_deg(s, v));
-          out << result.planner << ',' << visibility << ',' << s << ',' << v + 1 << ',' << error
-              << '\n';
-        }
-      }
-    }
-  }
 }
 
 }  // namespace vdc

@@ -2,8 +2,6 @@
 
 #include <gtest/gtest.h>
 
-#include <set>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -100,43 +98,6 @@ TEST(EvaluationTest, SequencesAreDeterministicPerSeedAndDifferBetweenSequences) 
   }
 }
 
-TEST(EvaluationTest, ErrorsCsvHasTheContractColumnsAndOneRowPerPlannerSettingSequenceAndView) {
-  EvaluationResult result;
-  result.planner = "random";
-  for (const double radius : {kAllVisible, 0.08}) {
-    SettingErrors setting;
-    setting.radius = radius;
-    setting.errors_deg = Eigen::MatrixXd::Constant(2, 3, 12.5);
-    result.settings.push_back(setting);
-  }
-  EvaluationResult baseline = result;
-  baseline.planner = "ppf_baseline";
-  std::ostringstream csv;
-  writeErrorsCsv(csv, {result, baseline});
-
-  std::istringstream lines(csv.str());
-  std::string line;
-  ASSERT_TRUE(std::getline(lines, line));
-  EXPECT_EQ(line, "planner,visibility,sequence,view,map_error_deg");
-  int rows = 0;
-  std::set<std::string> visibilities, planners;
-  while (std::getline(lines, line)) {
-    ++rows;
-    std::vector<std::string> fields;
-    std::istringstream row(line);
-    for (std::string field; std::getline(row, field, ',');) fields.push_back(field);
-    ASSERT_EQ(fields.size(), 5u) << line;
-    planners.insert(fields[0]);
-    visibilities.insert(fields[1]);
-    EXPECT_GE(std::stoi(fields[3]), 1);
-    EXPECT_LE(std::stoi(fields[3]), 3);
-    EXPECT_DOUBLE_EQ(std::stod(fields[4]), 12.5);
-  }
-  EXPECT_EQ(rows, 2 * 2 * 2 * 3);
-  EXPECT_EQ(planners, (std::set<std::string>{"random", "ppf_baseline"}));
-  EXPECT_EQ(visibilities, (std::set<std::string>{"all", "0.08"}));
-}
-
 TEST(EvaluationTest, SingleViewMethodWithoutEstimatesCountsEveryViewAs180DegreesAndSkipped) {
   const EvaluationSettings settings = smallSettings();
   int calls = 0;
@@ -184,20 +145,7 @@ TEST(EvaluationTest, ViewsUntilTheMedianStaysBelowAThresholdIgnoreDipsThatComeBa
   EXPECT_EQ(viewsUntilMedianStaysBelow(Eigen::VectorXd(), 5.0), std::nullopt);
 }
 
-TEST(EvaluationTest, VisibilityLabelsRoundTripAndBadOnesAreRefused) {
-  EXPECT_EQ(visibilityLabel(kAllVisible), "all");
-  EXPECT_EQ(visibilityLabel(0.08), "0.08");
-  EXPECT_EQ(visibilityLabel(0.035), "0.035");
-  for (const double r : {0.08, 0.03, 0.055, 1.0 / 3.0}) {
-    EXPECT_EQ(parseVisibility(visibilityLabel(r)), r);
-  }
-  EXPECT_EQ(parseVisibility("all"), kAllVisible);
-  for (const char* bad : {"", "none", "-0.05", "0", "0.05cm", "nan", "inf"}) {
-    EXPECT_THROW(parseVisibility(bad), Error) << bad;
-  }
-}
-
-TEST(EvaluationTest, BadSettingsPlannersAndMissingAnchorsAreRefused) {
+TEST(EvaluationTest, BadSettingsAndMissingAnchorsAreRefused) {
   EvaluationSettings settings = smallSettings();
   settings.sequences = 0;
   EXPECT_THROW(checkEvaluationSettings(settings), Error);
@@ -210,8 +158,6 @@ TEST(EvaluationTest, BadSettingsPlannersAndMissingAnchorsAreRefused) {
   settings = smallSettings();
   settings.distance = 0.0;
   EXPECT_THROW(checkEvaluationSettings(settings), Error);
-  EXPECT_THROW(parseEvaluationPlanner("greedy"), Error);
-  EXPECT_EQ(parseEvaluationPlanner("information_gain"), EvaluationPlanner::kInformationGain);
   // Occlusion settings need anchors; the unoccluded one does not.
   EXPECT_THROW(evaluateEstimator(test::quickMugModel(), makeMug(), {}, EvaluationPlanner::kRandom,
                                  smallSettings()),

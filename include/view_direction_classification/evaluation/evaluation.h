@@ -10,16 +10,15 @@
 #include <limits>
 #include <memory>
 #include <optional>
-#include <ostream>
 #include <string>
 #include <vector>
 
+#include "view_direction_classification/common/progress.h"
+#include "view_direction_classification/estimation/orientation_estimator.h"
 #include "view_direction_classification/geometry/camera.h"
 #include "view_direction_classification/geometry/depth_renderer.h"
-#include "view_direction_classification/training/model_bundle.h"
-#include "view_direction_classification/estimation/orientation_estimator.h"
-#include "view_direction_classification/common/progress.h"
 #include "view_direction_classification/geometry/triangle_mesh.h"
+#include "view_direction_classification/training/model_bundle.h"
 
 namespace vdc {
 
@@ -55,14 +54,8 @@ enum class EvaluationPlanner {
   kInformativeness,  // next_best_view.h utility 1 (the paper's proposal) over the candidates
   kInformationGain,  // next_best_view.h utility 2 over the candidates
 };
-// "random", "informativeness" or "information_gain"; throws vdc::Error naming the accepted ones.
-EvaluationPlanner parseEvaluationPlanner(const std::string& name);
+// "random", "informativeness" or "information_gain": the name of the planner's results.
 std::string evaluationPlannerName(EvaluationPlanner planner);
-
-// "all" for kAllVisible, otherwise the radius in metres as the shortest exact decimal ("0.08").
-std::string visibilityLabel(double radius);
-// Inverse of visibilityLabel; throws vdc::Error for anything but "all" or a positive number.
-double parseVisibility(const std::string& label);
 
 // One random view sequence: the object's fixed true orientation q_WO (the object sits at the
 // world origin) and the candidate camera poses T_CO, each looking at the object origin from a
@@ -136,9 +129,5 @@ EvaluationResult evaluateSingleView(const SingleViewMethod& method, const std::s
                                     const std::vector<Eigen::Vector3d>& anchors,
                                     const EvaluationSettings& settings,
                                     const ProgressCallback& progress = {});
-
-// errors.csv: header "planner,visibility,sequence,view,map_error_deg", then one row per
-// result, setting, sequence (0-based) and view (1-based: the number of views seen so far).
-void writeErrorsCsv(std::ostream& out, const std::vector<EvaluationResult>& results);
 
 }  // namespace vdc

@@ -1,0 +1,72 @@
+#include "evaluation_console.h"
+
+#include <cstdio>
+#include <optional>
+
+#include "evaluation_labels.h"
+#include "evaluation_summary.h"
+
+namespace vdc::tools {
+
+namespace {
+
+void printTimings(const EvaluationResult& result) {
+  std::printf("%s: %.1f ms/view estimator update", result.planner.c_str(), result.mean_update_ms);
+  if (result.mean_planning_ms > 0) std::printf(", %.1f ms/view planning", result.mean_planning_ms);
+  std::printf("\n");
+  const UpdateTiming& t = result.mean_stage_ms;
+  std::printf(
+      "  stages: features %.1f, classification %.1f, measurement %.1f, fusion %.1f; MAP %.1f "
+      "ms/view\n",
+      t.features, t.classification, t.measurement, t.fusion, result.mean_map_ms);
+}
+
+// The median after views 1, 5, 10, 20 and the last, and when it stays under kConvergedDeg.
+void printSettingMedians(const SettingErrors& setting, int views) {
+  const Eigen::VectorXd medians = setting.medianPerView();
+  std::printf("  %-5s (%5.1f %% visible): median error", visibilityLabel(setting.radius).c_str(),
+              100.0 * setting.visible_fraction);
+  for (const int v : {1, 5, 10, 20}) {
+    if (v <= views) std::printf("  %2d: %6.1f", v, medians(v - 1));
+  }
+  if (views != 1 && views != 5 && views != 10 && views != 20) {
+    std::printf("  %2d: %6.1f", views, medians(views - 1));
+  }
+  const std::optional<int> converged = viewsUntilMedianStaysBelow(medians, kConvergedDeg);
+  if (converged) {
+    std::printf(" deg; < %.0f deg from view %d on\n", kConvergedDeg, *converged);
+  } else {
+    std::printf(" deg; never < %.0f deg to the end\n", kConvergedDeg);
+  }
+}
+
+void printBaseline(const BaselineResult& baseline) {
+  std::printf("%s: %.1f ms/view, trained in %.1f s\n", baseline.result.planner.c_str(),
+              baseline.result.mean_update_ms, baseline.training_seconds);
+  for (const auto& setting : baseline.result.settings) {
+    std::printf("  %-5s single-view median error %6.1f deg (%d views without a pose)\n",
+                visibilityLabel(setting.radius).c_str(), medianOverAllViews(setting),
+                setting.skipped_views);
+  }
+}
+
+}  // namespace
+
+void printEvaluationStart(const std::string& model_path, const std::string& mesh_path,
+                          const EvaluationSettings& settings) {
+  std::fprintf(stderr,
+               "evaluating %s on %s: %d sequences x %d views, %zu visibility settings, seed %u, "
+               "noise %s\n",
+               model_path.c_str(), mesh_path.c_str(), settings.sequences, settings.views,
+               settings.visibility_radii.size(), settings.seed, settings.noise ? "on" : "off");
+}
+
+void printEvaluationReport(const EvaluationReport& report) {
+  for (const auto& result : report.results) {
+    printTimings(result);
+    for (const auto& setting : result.settings) printSettingMedians(setting, report.settings.views);
+  }
+  if (report.baseline) printBaseline(*report.baseline);
+}
+
+}  // namespace vdc::tools

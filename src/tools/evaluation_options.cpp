@@ -1,0 +1,199 @@
+#include "evaluation_options.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+#include "evaluation_labels.h"
+#include "view_direction_classification/common/error.h"
+#include "view_direction_classification/geometry/mug_mesh.h"
+#include "view_direction_classification/training/model_training.h"
+
+namespace vdc::tools {
+
+namespace {
+
+// The paper's settings: all visible and r_vis = 8 .. 3 cm.
+constexpr const char* kDefaultVisibility = "all,0.08,0.07,0.06,0.05,0.04,0.03";
+constexpr const char* kDefaultPlanners = "random";
+
+std::vector<std::string> splitList(const std::string& text, char separator) {
+  std::vector<std::string> items;
+  std::stringstream stream(text);
+  for (std::string item; std::getline(stream, item, separator);) {
+    if (!item.empty()) items.push_back(item);
+  }
+  return items;
+}
+
+// "x,y,z;x,y,z" in metres, object frame.
+std::vector<Eigen::Vector3d> parseAnchors(const std::string& text) {
+  std::vector<Eigen::Vector3d> anchors;
+  for (const std::string& point : splitList(text, ';')) {
+    const std::vector<std::string> coordinates = splitList(point, ',');
+    Eigen::Vector3d anchor;
+    bool valid = coordinates.size() == 3;
+    for (std::size_t k = 0; valid && k < 3; ++k) {
+      char* end = nullptr;
+      anchor(static_cast<Eigen::Index>(k)) = std::strtod(coordinates[k].c_str(), &end);
+      valid = end == coordinates[k].c_str() + coordinates[k].size() && std::isfinite(anchor(k));
+    }
+    if (!valid) {
+      throw Error("--anchors: '" + point +
+                  "' is not a point x,y,z in metres (points separated by ;)");
+    }
+    anchors.push_back(anchor);
+  }
+  if (anchors.empty()) throw Error("--anchors: no anchor point given");
+  return anchors;
+}
+
+// A CLI validator for a comma-separated list, so a malformed list is a usage error (exit code 2)
+// reported before any work.
+template <typename Parse>
+CLI::Validator listValidator(Parse parse, const std::string& empty_message) {
+  return CLI::Validator(
+      [parse, empty_message](const std::string& text) -> std::string {
+        try {
+          for (const std::string& item : splitList(text, ',')) parse(item);
+        } catch (const Error& error) {
+          return error.what();
+        }
+        return splitList(text, ',').empty() ? empty_message : "";
+      },
+      "LIST");
+}
+
+// Declares option `flag` on the settings field that `field` selects (a lambda returning a
+// reference to it, for const and non-const settings) and records the value a run used under
+// `summary_key` in summary.json (empty: not recorded).
+template <typename Field>
+CLI::Option* addSetting(CLI::App& command, EvaluateOptions& options, const std::string& flag,
+                        Field field, const std::string& summary_key, const std::string& help) {
+  if (!summary_key.empty()) {
+    options.recorded.push_back({nlohmann::json::json_pointer(summary_key),
+                                [field](const EvaluationSettings& s) { return field(s); }});
+  }
+  return command.add_option(flag, field(options.settings), help);
+}
+
+}  // namespace
+
+void addEvaluateOptions(CLI::App& command, EvaluateOptions& options) {
+  options.visibility = kDefaultVisibility;
+  options.planners = kDefaultPlanners;
+  command.add_option("--model", options.model_path, "model bundle (HDF5)")->required();
+  command.add_option("--mesh", options.mesh_path, "the object's mesh (the model's object)")
+      ->required();
+  command.add_option("--out", options.out_dir, "output directory")->required();
+  addSetting(
+      command, options, "--sequences", [](auto& s) -> auto& { return s.sequences; }, "/sequences",
+      "random view sequences")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 10000));
+  addSetting(
+      command, options, "--views", [](auto& s) -> auto& { return s.views; }, "/views",
+      "views per sequence")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000));
+  command
+      .add_option("--visibility", options.visibility,
+                  "comma-separated settings: 'all' or a radius [m] around the anchors")
+      ->capture_default_str()
+      ->check(listValidator(parseVisibility, "no visibility setting given"));
+  command
+      .add_option("--planner", options.planners,
+                  "comma-separated: random, informativeness, information_gain")
+      ->capture_default_str()
+      ->check(listValidator(parseEvaluationPlanner, "no planner given"));
+  addSetting(
+      command, options, "--candidates", [](auto& s) -> auto& { return s.candidates; },
+      "/candidates", "random candidate views per sequence the planners choose from")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 10000));
+  command.add_option("--anchors", options.anchors,
+                     "visibility anchors 'x,y,z;x,y,z' [m, object frame]; default: the mug's "
+                     "two handle points");
+  addSetting(
+      command, options, "--seed", [](auto& s) -> auto& { return s.seed; }, "/seed",
+      "seed of sequences, orientations and noise")
+      ->capture_default_str();
+  addSetting(
+      command, options, "--distance", [](auto& s) -> auto& { return s.distance; }, "/distance_m",
+      "camera distance [m]; default: the model's")
+      ->each([&options](const std::string&) { options.distance_given = true; });
+  addSetting(
+      command, options, "--threads", [](auto& s) -> auto& { return s.threads; }, "",
+      "OpenMP threads (0: all cores)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 256));
+  // The estimator's tuning knobs (every default was tuned with this evaluation: doc/method.md,
+  // "Defaults").
+  addSetting(
+      command, options, "--n-feat", [](auto& s) -> auto& { return s.estimator.n_feat; },
+      "/estimator/n_feat", "most certain features summed per view; 0: the model's value")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 100000));
+  addSetting(
+      command, options, "--kappa", [](auto& s) -> auto& { return s.estimator.kappa; },
+      "/estimator/kappa", "girdle concentration; 0: the default for the model's view spacing")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1e6));
+  addSetting(
+      command, options, "--max-components",
+      [](auto& s) -> auto& { return s.estimator.max_components; }, "/estimator/max_components",
+      "K_max of the belief")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100000));
+  addSetting(
+      command, options, "--min-weight", [](auto& s) -> auto& { return s.estimator.min_weight; },
+      "/estimator/min_weight", "measurement components below this p_sum are dropped")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 0.5));
+  addSetting(
+      command, options, "--belief-weight-floor",
+      [](auto& s) -> auto& { return s.estimator.belief_weight_floor; },
+      "/estimator/belief_weight_floor",
+      "belief components below this fraction of the heaviest are dropped")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 0.5));
+  command.add_flag("--baseline", options.baseline,
+                   "also run the single-view PPF baseline (PCL) on the random planner's views");
+  command.add_flag("--no-noise", options.no_noise, "render the views without sensor noise");
+  options.recorded.push_back({nlohmann::json::json_pointer("/noise"),
+                              [](const EvaluationSettings& s) { return s.noise; }});
+  command.add_flag("--no-figure", options.no_figure, "no plots (no matplotlib needed)");
+}
+
+EvaluationRequest parseEvaluateOptions(const EvaluateOptions& options) {
+  EvaluationRequest request;
+  request.settings = options.settings;
+  request.settings.visibility_radii.clear();
+  for (const std::string& label : splitList(options.visibility, ',')) {
+    request.settings.visibility_radii.push_back(parseVisibility(label));
+  }
+  if (request.settings.visibility_radii.empty()) throw Error("--visibility: no setting given");
+  for (const std::string& name : splitList(options.planners, ',')) {
+    request.planners.push_back(parseEvaluationPlanner(name));
+  }
+  if (request.planners.empty()) throw Error("--planner: no planner given");
+  request.anchors = options.anchors.empty() ? mugHandleAnchors() : parseAnchors(options.anchors);
+  return request;
+}
+
+EvaluationSettings resolveSettings(EvaluationSettings settings, const EvaluateOptions& options,
+                                   const ModelBundle& model) {
+  // Evaluate at the distance the model was trained for unless told otherwise.
+  if (!options.distance_given) settings.distance = model.parameters.distance;
+  settings.noise = !options.no_noise;
+  checkEvaluationSettings(settings);
+  return settings;
+}
+
+nlohmann::json recordedSettings(const EvaluateOptions& options, const EvaluationSettings& used) {
+  nlohmann::json record = nlohmann::json::object();
+  for (const RecordedSetting& setting : options.recorded) record[setting.key] = setting.value(used);
+  return record;
+}
+
+}  // namespace vdc::tools

@@ -1,0 +1,17 @@
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "evaluation_report.h"
+
+namespace vdc::tools {
+
+// summary.json: the recorded settings, then per planner its timings and per setting the median
+// error after each view, the medians after 1, 5, 10, 20 and the last view and the views until the
+// median stays under kConvergedDeg; the baseline's single-view medians (or null).
+nlohmann::json evaluationSummary(const EvaluationReport& report);
+
+// The median of every view's error in a setting: the baseline judges each view alone.
+double medianOverAllViews(const SettingErrors& setting);
+
+}  // namespace vdc::tools

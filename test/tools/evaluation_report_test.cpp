@@ -1,0 +1,170 @@
+// `vdc evaluate`'s own business, without running the tool: its option lists and labels, what
+// summary.json records of the settings, and the errors.csv contract.
+#include <gtest/gtest.h>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "evaluation_csv.h"
+#include "evaluation_labels.h"
+#include "evaluation_options.h"
+#include "view_direction_classification/common/error.h"
+
+namespace vdc::tools {
+namespace {
+
+TEST(EvaluationReportTest,
+     ErrorsCsvHasTheContractColumnsAndOneRowPerPlannerSettingSequenceAndView) {
+  EvaluationResult result;
+  result.planner = "random";
+  for (const double radius : {kAllVisible, 0.08}) {
+    SettingErrors setting;
+    setting.radius = radius;
+    setting.errors_deg = Eigen::MatrixXd::Constant(2, 3, 12.5);
+    result.settings.push_back(setting);
+  }
+  EvaluationResult baseline = result;
+  baseline.planner = "ppf_baseline";
+  std::ostringstream csv;
+  writeErrorsCsv(csv, {result, baseline});
+
+  std::istringstream lines(csv.str());
+  std::string line;
+  ASSERT_TRUE(std::getline(lines, line));
+  EXPECT_EQ(line, "planner,visibility,sequence,view,map_error_deg");
+  int rows = 0;
+  std::set<std::string> visibilities, planners;
+  while (std::getline(lines, line)) {
+    ++rows;
+    std::vector<std::string> fields;
+    std::istringstream row(line);
+    for (std::string field; std::getline(row, field, ',');) fields.push_back(field);
+    ASSERT_EQ(fields.size(), 5u) << line;
+    planners.insert(fields[0]);
+    visibilities.insert(fields[1]);
+    EXPECT_GE(std::stoi(fields[3]), 1);
+    EXPECT_LE(std::stoi(fields[3]), 3);
+    EXPECT_DOUBLE_EQ(std::stod(fields[4]), 12.5);
+  }
+  EXPECT_EQ(rows, 2 * 2 * 2 * 3);
+  EXPECT_EQ(planners, (std::set<std::string>{"random", "ppf_baseline"}));
+  EXPECT_EQ(visibilities, (std::set<std::string>{"all", "0.08"}));
+}
+
+TEST(EvaluationReportTest, ErrorsCsvRowsNameTheirSequenceFromZeroAndViewFromOne) {
+  EvaluationResult result;
+  result.planner = "random";
+  SettingErrors setting;
+  setting.radius = 0.05;
+  setting.errors_deg.resize(2, 1);
+  setting.errors_deg << 1.23456, 90.0;
+  result.settings.push_back(setting);
+  std::ostringstream csv;
+  writeErrorsCsv(csv, {result});
+  EXPECT_EQ(csv.str(),
+            "planner,visibility,sequence,view,map_error_deg\n"
+            "random,0.05,0,1,1.2346\n"
+            "random,0.05,1,1,90.0000\n");
+}
+
+TEST(EvaluationReportTest, VisibilityLabelsRoundTripAndBadOnesAreRefused) {
+  EXPECT_EQ(visibilityLabel(kAllVisible), "all");
+  EXPECT_EQ(visibilityLabel(0.08), "0.08");
+  EXPECT_EQ(visibilityLabel(0.035), "0.035");
+  for (const double r : {0.08, 0.03, 0.055, 1.0 / 3.0}) {
+    EXPECT_EQ(parseVisibility(visibilityLabel(r)), r);
+  }
+  EXPECT_EQ(parseVisibility("all"), kAllVisible);
+  for (const char* bad : {"", "none", "-0.05", "0", "0.05cm", "nan", "inf"}) {
+    EXPECT_THROW(parseVisibility(bad), Error) << bad;
+  }
+}
+
+TEST(EvaluationReportTest, PlannerNamesParseBackAndUnknownOnesAreRefused) {
+  EXPECT_THROW(parseEvaluationPlanner("greedy"), Error);
+  EXPECT_EQ(parseEvaluationPlanner("information_gain"), EvaluationPlanner::kInformationGain);
+  for (const EvaluationPlanner planner :
+       {EvaluationPlanner::kRandom, EvaluationPlanner::kInformativeness,
+        EvaluationPlanner::kInformationGain}) {
+    EXPECT_EQ(parseEvaluationPlanner(evaluationPlannerName(planner)), planner);
+  }
+}
+
+// The options parsed from `arguments` (after "evaluate --model m.h5 --mesh m.ply --out out").
+class EvaluateOptionsTest : public ::testing::Test {
+ protected:
+  void parse(const std::string& arguments) {
+    addEvaluateOptions(command_, options_);
+    command_.parse("--model m.h5 --mesh m.ply --out out " + arguments, false);
+  }
+  CLI::App command_{"evaluate"};
+  EvaluateOptions options_;
+};
+
+TEST_F(EvaluateOptionsTest, SummaryRecordsEverySettingARunUsedUnderItsKey) {
+  parse(
+      "--sequences 3 --views 4 --candidates 9 --seed 5 --distance 0.5 --kappa 2.5 --n-feat 7 "
+      "--max-components 11 --min-weight 0.01 --belief-weight-floor 0.001 --no-noise");
+  ModelBundle model;
+  model.parameters.distance = 0.7;
+  const EvaluationSettings used =
+      resolveSettings(parseEvaluateOptions(options_).settings, options_, model);
+  const nlohmann::json expected = {{"sequences", 3},
+                                   {"views", 4},
+                                   {"candidates", 9},
+                                   {"seed", 5u},
+                                   {"distance_m", 0.5},
+                                   {"noise", false},
+                                   {"estimator",
+                                    {{"n_feat", 7},
+                                     {"kappa", 2.5},
+                                     {"max_components", 11},
+                                     {"min_weight", 0.01},
+                                     {"belief_weight_floor", 0.001}}}};
+  EXPECT_EQ(recordedSettings(options_, used), expected);
+}
+
+TEST_F(EvaluateOptionsTest, DistanceIsTheModelsUnlessGiven) {
+  parse("");
+  ModelBundle model;
+  model.parameters.distance = 0.7;
+  const EvaluationRequest request = parseEvaluateOptions(options_);
+  EXPECT_EQ(resolveSettings(request.settings, options_, model).distance, 0.7);
+  EXPECT_TRUE(resolveSettings(request.settings, options_, model).noise);
+}
+
+TEST_F(EvaluateOptionsTest, ListsParseIntoRadiiPlannersAndAnchors) {
+  parse("--visibility all,0.05 --planner random,information_gain --anchors '0,0,0.1;0.02,0,0'");
+  const EvaluationRequest request = parseEvaluateOptions(options_);
+  EXPECT_EQ(request.settings.visibility_radii, (std::vector<double>{kAllVisible, 0.05}));
+  EXPECT_EQ(request.planners,
+            (std::vector<EvaluationPlanner>{EvaluationPlanner::kRandom,
+                                            EvaluationPlanner::kInformationGain}));
+  ASSERT_EQ(request.anchors.size(), 2u);
+  EXPECT_EQ(request.anchors[1], Eigen::Vector3d(0.02, 0, 0));
+}
+
+TEST_F(EvaluateOptionsTest, MalformedListsAreUsageErrors) {
+  for (const char* bad :
+       {"--visibility none", "--visibility ,", "--planner greedy", "--planner ,"}) {
+    CLI::App command{"evaluate"};
+    EvaluateOptions options;
+    addEvaluateOptions(command, options);
+    EXPECT_THROW(command.parse(std::string("--model m --mesh m --out o ") + bad, false),
+                 CLI::ValidationError)
+        << bad;
+  }
+}
+
+TEST_F(EvaluateOptionsTest, MalformedAnchorsAreRefusedNamingTheOption) {
+  parse("--anchors '0,0;1,2,3'");
+  EXPECT_THROW(parseEvaluateOptions(options_), Error);
+}
+
+}  // namespace
+}  // namespace vdc::tools
