@@ -1,18 +1,19 @@
 #include "view_direction_classification/geometry/mesh_io.h"
 
-#include <assimp/postprocess.h>
-#include <assimp/scene.h>
-#include <assimp/Importer.hpp>
-
+#include <algorithm>
 #include <array>
+#include <cctype>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <map>
+#include <limits>
 #include <system_error>
+#include <unordered_map>
 #include <utility>
 
+#include "mesh_readers.h"
+#include "polygon_triangulation.h"
 #include "view_direction_classification/common/error.h"
 
 // Binary PLY is written from the in-memory representation.
@@ -25,7 +26,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-void checkReadableFile(const std::string& path) {
+// The whole file is read into memory; a mesh to train on is far smaller.
+constexpr std::uintmax_t kMaxMeshFileBytes = std::uintmax_t(1) << 30;
+
+std::uintmax_t checkReadableFile(const std::string& path) {
   std::error_code ec;
   const fs::file_status status = fs::status(path, ec);
   if (ec || !fs::exists(status)) {
@@ -34,109 +38,188 @@ void checkReadableFile(const std::string& path) {
   if (!fs::is_regular_file(status)) {
     throw Error("Mesh file '" + path + "' is not a regular file.");
   }
-  if (fs::file_size(path, ec) == 0 || ec) {
+  const std::uintmax_t size = fs::file_size(path, ec);
+  if (size == 0 || ec) {
     throw Error("Mesh file '" + path + "' is empty.");
   }
-  std::ifstream probe(path, std::ios::binary);
-  if (!probe) {
-    throw Error("Mesh file '" + path + "' cannot be opened for reading.");
+  if (size > kMaxMeshFileBytes) {
+    throw Error("Mesh file '" + path + "' is " + std::to_string(size >> 20) +
+                " MiB, more than the 1024 MiB this loader reads.");
   }
+  return size;
 }
 
-// Joins vertices with bit-identical coordinates across all parts of the scene. Assimp's own
-// JoinIdenticalVertices works per part and also compares normals, which leaves STL files (one
-// normal per face) as a triangle soup.
+std::string readFile(const std::string& path, std::uintmax_t size) {
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes(static_cast<std::size_t>(size), '\0');
+  if (!in || !in.read(bytes.data(), static_cast<std::streamsize>(size))) {
+    throw Error("Mesh file '" + path + "' cannot be read.");
+  }
+  return bytes;
+}
+
+std::string lowerCaseExtension(const std::string& path) {
+  std::string extension = fs::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return extension;
+}
+
+const char* formatName(MeshFormat format) {
+  switch (format) {
+    case MeshFormat::kPly:
+      return "PLY";
+    case MeshFormat::kOff:
+      return "OFF";
+    case MeshFormat::kObj:
+      return "OBJ";
+    case MeshFormat::kStl:
+      return "STL";
+  }
+  return "mesh";
+}
+
+// Joins vertices with bit-identical coordinates across the whole file (STL repeats every
+// corner, other formats may split parts or normals).
 class VertexWelder {
  public:
   explicit VertexWelder(TriangleMesh* mesh) : mesh_(mesh) {}
 
-  int index(const aiVector3D& p) {
-    const Eigen::Vector3f v(p.x, p.y, p.z);
+  int index(const Eigen::Vector3f& v) {
     std::array<std::uint32_t, 3> key;
     for (int k = 0; k < 3; ++k) {
       // +0.0f folds -0 into 0, so both spellings of zero are one vertex.
       const float coordinate = v[k] + 0.0f;
       std::memcpy(&key[k], &coordinate, sizeof(float));
     }
-    const auto found = lookup_.find(key);
-    if (found != lookup_.end()) return found->second;
-    const int new_index = static_cast<int>(mesh_->vertices.size());
-    mesh_->vertices.push_back(v);
-    lookup_.emplace(key, new_index);
-    return new_index;
+    const auto [found, inserted] =
+        lookup_.try_emplace(key, static_cast<int>(mesh_->vertices.size()));
+    if (inserted) mesh_->vertices.push_back(v);
+    return found->second;
   }
 
  private:
+  struct KeyHash {
+    std::size_t operator()(const std::array<std::uint32_t, 3>& key) const {
+      std::uint64_t h = 1469598103934665603ull;
+      for (std::uint32_t k : key) h = (h ^ k) * 1099511628211ull;
+      return static_cast<std::size_t>(h);
+    }
+  };
+
   TriangleMesh* mesh_;
-  std::map<std::array<std::uint32_t, 3>, int> lookup_;
+  std::unordered_map<std::array<std::uint32_t, 3>, int, KeyHash> lookup_;
 };
 
-// Adds the triangles of `node` and its children, moved into the scene's root frame. A mirroring
-// transform (negative determinant) reverses the corners so the triangles keep facing outwards.
-void addNode(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent,
-             const std::string& path, VertexWelder* welder, TriangleMesh* mesh) {
-  const aiMatrix4x4 transform = parent * node.mTransformation;
-  const bool mirrored = transform.Determinant() < 0.0f;
-  for (unsigned int n = 0; n < node.mNumMeshes; ++n) {
-    const aiMesh* part = scene.mMeshes[node.mMeshes[n]];
-    for (unsigned int f = 0; f < part->mNumFaces; ++f) {
-      const aiFace& face = part->mFaces[f];
-      if (face.mNumIndices != 3) continue;  // points and lines carry no surface
-      Eigen::Vector3i tri;
-      for (int k = 0; k < 3; ++k) {
-        const unsigned int i = face.mIndices[k];
-        if (i >= part->mNumVertices) {
-          throw Error("Mesh file '" + path + "' has a face referring to a missing vertex.");
-        }
-        tri[k] = welder->index(transform * part->mVertices[i]);
+// Checks every polygon's corners against the vertices, triangulates and joins identical
+// vertices (only those a triangle uses are kept).
+TriangleMesh assembleMesh(const mesh_readers::IndexedPolygons& polygons, const std::string& name) {
+  const std::size_t vertex_count = polygons.vertices.size();
+  std::vector<Eigen::Vector3i> triangles;
+  std::size_t first = 0;
+  for (std::size_t p = 0; p < polygons.corner_counts.size(); ++p) {
+    const std::size_t count = polygons.corner_counts[p];
+    const std::int32_t* corners = polygons.corners.data() + first;
+    first += count;
+    for (std::size_t k = 0; k < count; ++k) {
+      const auto index = static_cast<std::size_t>(corners[k]);
+      if (index >= vertex_count) {
+        throw Error("Mesh file '" + name + "' has a face (number " + std::to_string(p) +
+                    ") referring to vertex " + std::to_string(index) + ", but only " +
+                    std::to_string(vertex_count) + " vertices.");
       }
-      if (mirrored) std::swap(tri[1], tri[2]);
-      mesh->triangles.push_back(tri);
+      if (!polygons.vertices[index].allFinite()) {
+        throw Error("Mesh file '" + name + "' contains a vertex with a non-finite coordinate.");
+      }
     }
+    triangulatePolygon(polygons.vertices, corners, count, &triangles);
   }
-  for (unsigned int c = 0; c < node.mNumChildren; ++c) {
-    addNode(scene, *node.mChildren[c], transform, path, welder, mesh);
+  if (triangles.empty()) {
+    throw Error("Mesh file '" + name +
+                "' contains no triangles (only points or lines, or no geometry at all).");
   }
+  TriangleMesh mesh;
+  mesh.triangles.reserve(triangles.size());
+  VertexWelder welder(&mesh);
+  for (const Eigen::Vector3i& triangle : triangles) {
+    mesh.triangles.emplace_back(welder.index(polygons.vertices[triangle[0]]),
+                                welder.index(polygons.vertices[triangle[1]]),
+                                welder.index(polygons.vertices[triangle[2]]));
+  }
+  return mesh;
 }
 
 }  // namespace
 
-TriangleMesh loadMesh(const std::string& path) {
-  checkReadableFile(path);
+namespace mesh_readers {
 
-  Assimp::Importer importer;
-  // Only positions matter; dropping normals and colours lets assimp's joining step work too.
-  importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS, aiComponent_NORMALS | aiComponent_COLORS |
-                                                          aiComponent_TEXCOORDS |
-                                                          aiComponent_TANGENTS_AND_BITANGENTS);
-  // The object frame is the file's own frame: assimp would otherwise rotate Z-up Collada files
-  // into its Y-up convention.
-  importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
-  // Node transforms are applied below rather than by aiProcess_PreTransformVertices, which
-  // rejects files without faces (point clouds) with a message about "orphaned meshes" instead of
-  // letting us say what is wrong.
-  const unsigned int flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                             aiProcess_RemoveComponent | aiProcess_SortByPType;
-  const aiScene* scene = importer.ReadFile(path, flags);
-  if (scene == nullptr || scene->mRootNode == nullptr) {
-    std::string reason = importer.GetErrorString();
-    if (reason.empty()) reason = "unknown format";
-    throw Error("Mesh file '" + path + "' cannot be read as a mesh: " + reason + ".");
+void IndexedPolygons::addPolygon(const std::int32_t* first, std::size_t count) {
+  if (count < 3) {
+    ++skipped_polygons;
+    return;
   }
+  corners.insert(corners.end(), first, first + count);
+  corner_counts.push_back(static_cast<std::uint32_t>(count));
+}
 
-  TriangleMesh mesh;
-  VertexWelder welder(&mesh);
-  addNode(*scene, *scene->mRootNode, aiMatrix4x4(), path, &welder, &mesh);
-  if (mesh.triangles.empty()) {
-    throw Error("Mesh file '" + path +
-                "' contains no triangles (only points or lines, or no geometry at all).");
+float toCoordinate(double value) {
+  constexpr double kMax = std::numeric_limits<float>::max();
+  if (value > kMax) return std::numeric_limits<float>::infinity();
+  if (value < -kMax) return -std::numeric_limits<float>::infinity();
+  return static_cast<float>(value);  // NaN stays NaN
+}
+
+}  // namespace mesh_readers
+
+std::optional<MeshFormat> meshFormatOf(const std::string& path, std::string_view first_bytes) {
+  if (first_bytes.substr(0, 4) == "ply\n" || first_bytes.substr(0, 5) == "ply\r\n") {
+    return MeshFormat::kPly;
   }
-  for (const auto& v : mesh.vertices) {
-    if (!v.allFinite()) {
-      throw Error("Mesh file '" + path + "' contains a vertex with a non-finite coordinate.");
+  const std::string extension = lowerCaseExtension(path);
+  if (extension == ".ply") return MeshFormat::kPly;
+  if (extension == ".off") return MeshFormat::kOff;
+  if (extension == ".obj") return MeshFormat::kObj;
+  if (extension == ".stl") return MeshFormat::kStl;
+  return std::nullopt;
+}
+
+TriangleMesh parseMesh(std::string_view bytes, MeshFormat format, const std::string& name) {
+  mesh_readers::IndexedPolygons polygons;
+  try {
+    switch (format) {
+      case MeshFormat::kPly:
+        polygons = mesh_readers::readPly(bytes);
+        break;
+      case MeshFormat::kOff:
+        polygons = mesh_readers::readOff(bytes);
+        break;
+      case MeshFormat::kObj:
+        polygons = mesh_readers::readObj(bytes);
+        break;
+      case MeshFormat::kStl:
+        polygons = mesh_readers::readStl(bytes);
+        break;
     }
+  } catch (const Error& error) {
+    throw Error("Mesh file '" + name + "' is not a valid " + formatName(format) +
+                " file: " + error.what() + ".");
   }
-  return mesh;
+  return assembleMesh(polygons, name);
+}
+
+TriangleMesh loadMesh(const std::string& path) {
+  const std::uintmax_t size = checkReadableFile(path);
+  const std::string bytes = readFile(path, size);
+  if (const std::optional<MeshFormat> format = meshFormatOf(path, bytes)) {
+    return parseMesh(bytes, *format, path);
+  }
+  mesh_readers::IndexedPolygons polygons;
+  try {
+    polygons = mesh_readers::readWithAssimp(path);
+  } catch (const Error& error) {
+    throw Error("Mesh file '" + path + "' cannot be read as a mesh: " + error.what() + ".");
+  }
+  return assembleMesh(polygons, path);
 }
 
 void saveMeshPly(const TriangleMesh& mesh, const std::string& path, PlyEncoding encoding) {
