@@ -12,7 +12,6 @@
 #include <cmath>
 #include <exception>
 #include <limits>
-#include <numeric>
 #include <optional>
 #include <sstream>
 
@@ -56,6 +55,136 @@ struct LogDensityModel {
     return x.dot(exponents[k] * x) + offsets[k];
   }
 };
+
+// The steps of reduce(): which components take part, how they cluster, which clusters are kept,
+// and one moment-matched component per kept cluster.
+
+void checkReductionOptions(const MixtureReductionOptions& options) {
+  if (!(options.relative_weight_threshold >= 0.0) || !(options.merge_angle >= 0.0) ||
+      !(options.merge_log_density >= 0.0) || options.max_components < 1) {
+    throw Error(
+        "Mixture reduction options must have a non-negative weight threshold, merge angle and "
+        "merge log density, and max_components >= 1.");
+  }
+}
+
+// The components at least `relative_threshold` times the heaviest, heaviest first (ties in index
+// order).
+std::vector<std::size_t> componentsHeaviestFirst(const BinghamMixture& mixture,
+                                                 double relative_threshold) {
+  const double heaviest = *std::max_element(mixture.weights().begin(), mixture.weights().end());
+  std::vector<std::size_t> order;
+  for (std::size_t k = 0; k < mixture.size(); ++k) {
+    if (mixture.weight(k) >= relative_threshold * heaviest) order.push_back(k);
+  }
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) {
+    return mixture.weight(i) > mixture.weight(j);
+  });
+  return order;
+}
+
+// Probe points of a component: its mode, and one standard deviation (at most 45 degrees of
+// quaternion arc) along its loosest axis both ways. For a girdle the latter lie on its circle.
+using Probes = std::array<Eigen::Vector4d, 3>;
+
+Probes probesOf(const BinghamDistribution& c) {
+  const double arc = std::min(M_PI / 4.0, 1.0 / std::sqrt(2.0 * -c.concentrations()(2) + 1e-300));
+  return Probes{c.mode(), std::cos(arc) * c.mode() + std::sin(arc) * c.axis(2),
+                std::cos(arc) * c.mode() - std::sin(arc) * c.axis(2)};
+}
+
+// The two merge tests of MixtureReductionOptions. A product of mixtures gives ~1000 components
+// and hundreds of clusters, so they avoid trigonometry: the modes' angle test compares |cos| of
+// the half angle.
+class MergeTest {
+ public:
+  explicit MergeTest(const MixtureReductionOptions& options)
+      // The rotation angle 2 acos|p.q| is at most merge_angle.
+      : min_mode_alignment_(std::cos(std::min(options.merge_angle, M_PI) / 2.0)),
+        merge_log_density_(options.merge_log_density) {}
+
+  bool modesClose(const BinghamDistribution& p, const BinghamDistribution& q) const {
+    return std::abs(p.mode().dot(q.mode())) >= min_mode_alignment_;
+  }
+
+  // q looks like p near p's mode when its density relative to its peak (x^T A x, 0 at the mode)
+  // falls at most merge_log_density below p's own at each of p's probe points.
+  bool resembles(const BinghamDistribution& p, const Probes& p_probes,
+                 const BinghamDistribution& q) const {
+    for (const Eigen::Vector4d& x : p_probes) {
+      if (x.dot(q.exponentMatrix() * x) < x.dot(p.exponentMatrix() * x) - merge_log_density_) {
+        return false;
+      }
+    }
+    return true;
+  }
+
+ private:
+  double min_mode_alignment_;
+  double merge_log_density_;
+};
+
+struct Cluster {
+  std::vector<std::size_t> members;  // the first is the leader, the heaviest
+  Probes leader_probes;              // kept: a leader is tested against many candidates
+  double weight = 0.0;               // the members' total
+};
+
+// Greedy clustering of `order` (heaviest first): a component joins the first cluster whose
+// leader passes both merge tests with it both ways, otherwise it leads a new cluster.
+std::vector<Cluster> clusterComponents(const BinghamMixture& mixture,
+                                       const std::vector<std::size_t>& order,
+                                       const MergeTest& test) {
+  std::vector<Cluster> clusters;
+  for (std::size_t k : order) {
+    const BinghamDistribution& candidate = mixture.component(k);
+    std::optional<Probes> candidate_probes;  // computed once it is needed
+    Cluster* joined = nullptr;
+    for (Cluster& cluster : clusters) {
+      const BinghamDistribution& leader = mixture.component(cluster.members.front());
+      if (!test.modesClose(leader, candidate)) continue;
+      if (!test.resembles(leader, cluster.leader_probes, candidate)) continue;
+      if (!candidate_probes) candidate_probes = probesOf(candidate);
+      if (!test.resembles(candidate, *candidate_probes, leader)) continue;
+      joined = &cluster;
+      break;
+    }
+    if (joined) {
+      joined->members.push_back(k);
+    } else {
+      clusters.push_back(Cluster{{k}, candidate_probes ? *candidate_probes : probesOf(candidate)});
+    }
+  }
+  for (Cluster& cluster : clusters) {
+    for (std::size_t k : cluster.members) cluster.weight += mixture.weight(k);
+  }
+  return clusters;
+}
+
+// Merged weights can reorder the clusters: the heaviest `max_components` by total weight, in
+// that order (ties in clustering order).
+std::vector<const Cluster*> heaviestClusters(const std::vector<Cluster>& clusters,
+                                             int max_components) {
+  std::vector<const Cluster*> ranked;
+  for (const Cluster& cluster : clusters) ranked.push_back(&cluster);
+  std::stable_sort(ranked.begin(), ranked.end(),
+                   [](const Cluster* a, const Cluster* b) { return a->weight > b->weight; });
+  if (ranked.size() > static_cast<std::size_t>(max_components)) ranked.resize(max_components);
+  return ranked;
+}
+
+// One component for a cluster: its leader alone, or the Bingham fitted to the members' weighted
+// mean scatter matrix, starting from the leader's concentrations (members passed the merge tests:
+// nearly equal).
+BinghamDistribution mergeCluster(const BinghamMixture& mixture, const Cluster& cluster) {
+  const BinghamDistribution& leader = mixture.component(cluster.members.front());
+  if (cluster.members.size() == 1) return leader;
+  Eigen::Matrix4d scatter = Eigen::Matrix4d::Zero();
+  for (std::size_t k : cluster.members) {
+    scatter += mixture.weight(k) * mixture.component(k).scatterMatrix();
+  }
+  return fitBinghamToScatter(scatter / cluster.weight, leader.concentrations());
+}
 
 }  // namespace
 
@@ -219,110 +348,22 @@ BinghamMixture multiply(const BinghamMixture& a, const BinghamMixture& b,
 }
 
 BinghamMixture reduce(const BinghamMixture& mixture, const MixtureReductionOptions& options) {
-  if (!(options.relative_weight_threshold >= 0.0) || !(options.merge_angle >= 0.0) ||
-      !(options.merge_log_density >= 0.0) || options.max_components < 1) {
-    throw Error(
-        "Mixture reduction options must have a non-negative weight threshold, merge angle and "
-        "merge log density, and max_components >= 1.");
-  }
-  const double heaviest = *std::max_element(mixture.weights().begin(), mixture.weights().end());
-  std::vector<std::size_t> order;
-  for (std::size_t k = 0; k < mixture.size(); ++k) {
-    if (mixture.weight(k) >= options.relative_weight_threshold * heaviest) order.push_back(k);
-  }
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) {
-    return mixture.weight(i) > mixture.weight(j);
-  });
-
-  // Greedy clustering, heaviest first: a component joins the first cluster whose leader (its
-  // heaviest member) passes both merge tests, otherwise it leads a new cluster. A product of
-  // mixtures gives ~1000 components and hundreds of clusters, so the tests avoid trigonometry:
-  // the modes' angle test compares |cos| of the half angle, and each leader's probes are kept.
-  // Probe points of a component: its mode, and one standard deviation (at most 45 degrees of
-  // quaternion arc) along its loosest axis both ways. For a girdle the latter lie on its circle.
-  using Probes = std::array<Eigen::Vector4d, 3>;
-  const auto probes = [](const BinghamDistribution& c) {
-    const double arc = std::min(M_PI / 4.0, 1.0 / std::sqrt(2.0 * -c.concentrations()(2) + 1e-300));
-    return Probes{c.mode(), std::cos(arc) * c.mode() + std::sin(arc) * c.axis(2),
-                  std::cos(arc) * c.mode() - std::sin(arc) * c.axis(2)};
-  };
-  // q looks like p near p's mode when its density relative to its peak (x^T A x, 0 at the mode)
-  // falls at most merge_log_density below p's own at each of p's probe points.
-  const auto resembles = [&](const BinghamDistribution& p, const Probes& p_probes,
-                             const BinghamDistribution& q) {
-    for (const Eigen::Vector4d& x : p_probes) {
-      if (x.dot(q.exponentMatrix() * x) <
-          x.dot(p.exponentMatrix() * x) - options.merge_log_density) {
-        return false;
-      }
-    }
-    return true;
-  };
-  // The rotation angle 2 acos|p.q| is at most merge_angle.
-  const double min_mode_alignment = std::cos(std::min(options.merge_angle, M_PI) / 2.0);
-  struct Cluster {
-    std::vector<std::size_t> members;
-    Probes leader_probes;
-  };
-  std::vector<Cluster> clusters;
-  for (std::size_t k : order) {
-    const BinghamDistribution& candidate = mixture.component(k);
-    std::optional<Probes> candidate_probes;
-    bool joined = false;
-    for (Cluster& cluster : clusters) {
-      const BinghamDistribution& leader = mixture.component(cluster.members.front());
-      if (std::abs(leader.mode().dot(candidate.mode())) < min_mode_alignment) continue;
-      if (!resembles(leader, cluster.leader_probes, candidate)) continue;
-      if (!candidate_probes) candidate_probes = probes(candidate);
-      if (!resembles(candidate, *candidate_probes, leader)) continue;
-      cluster.members.push_back(k);
-      joined = true;
-      break;
-    }
-    if (!joined) {
-      clusters.push_back(Cluster{{k}, candidate_probes ? *candidate_probes : probes(candidate)});
-    }
-  }
-
-  // Merged weights can reorder the clusters: rank them by total weight, then cap.
-  std::vector<double> cluster_weights;
-  for (const Cluster& cluster : clusters) {
-    double weight = 0.0;
-    for (std::size_t k : cluster.members) weight += mixture.weight(k);
-    cluster_weights.push_back(weight);
-  }
-  std::vector<std::size_t> by_weight(clusters.size());
-  std::iota(by_weight.begin(), by_weight.end(), 0);
-  std::stable_sort(by_weight.begin(), by_weight.end(), [&](std::size_t i, std::size_t j) {
-    return cluster_weights[i] > cluster_weights[j];
-  });
-  if (by_weight.size() > static_cast<std::size_t>(options.max_components)) {
-    by_weight.resize(options.max_components);
-  }
-  // Moment matching per cluster: the members' scatter matrices (one normaliser gradient each)
-  // and the refit dominate a filter update, so clusters run in parallel and each refit starts
-  // from its heaviest member's concentrations (members passed the merge tests: nearly equal).
-  std::vector<double> weights(by_weight.size());
-  std::vector<BinghamDistribution> components(by_weight.size());
-  const auto cluster_count = static_cast<std::ptrdiff_t>(by_weight.size());
+  checkReductionOptions(options);
+  const std::vector<Cluster> clusters = clusterComponents(
+      mixture, componentsHeaviestFirst(mixture, options.relative_weight_threshold),
+      MergeTest(options));
+  const std::vector<const Cluster*> kept = heaviestClusters(clusters, options.max_components);
+  // The members' scatter matrices (one normaliser gradient each) and the refit dominate a filter
+  // update, so clusters are merged in parallel.
+  std::vector<double> weights(kept.size());
+  std::vector<BinghamDistribution> components(kept.size());
   std::exception_ptr failure;  // an exception must not leave an OpenMP region
 #pragma omp parallel for schedule(dynamic, 1)
-  for (std::ptrdiff_t n = 0; n < cluster_count; ++n) {
+  for (std::ptrdiff_t n = 0; n < static_cast<std::ptrdiff_t>(kept.size()); ++n) {
+    const auto i = static_cast<std::size_t>(n);
     try {
-      const std::size_t c = by_weight[static_cast<std::size_t>(n)];
-      const Cluster& cluster = clusters[c];
-      const BinghamDistribution& leader = mixture.component(cluster.members.front());
-      if (cluster.members.size() == 1) {
-        components[static_cast<std::size_t>(n)] = leader;
-      } else {
-        Eigen::Matrix4d scatter = Eigen::Matrix4d::Zero();
-        for (std::size_t k : cluster.members) {
-          scatter += mixture.weight(k) * mixture.component(k).scatterMatrix();
-        }
-        components[static_cast<std::size_t>(n)] =
-            fitBinghamToScatter(scatter / cluster_weights[c], leader.concentrations());
-      }
-      weights[static_cast<std::size_t>(n)] = cluster_weights[c];
+      components[i] = mergeCluster(mixture, *kept[i]);
+      weights[i] = kept[i]->weight;
     } catch (...) {
 #pragma omp critical(vdc_reduce_failure)
       if (!failure) failure = std::current_exception();
