@@ -2,10 +2,10 @@
 
 #include <ros/node_handle.h>
 
-#include <Eigen/Core>
 #include <string>
 
 #include "view_direction_classification/estimation/orientation_estimator.h"
+#include "view_direction_classification/ros/parameter_table.h"
 
 namespace vdc {
 
@@ -30,9 +30,12 @@ struct EstimatorRosParameters {
   EstimatorParameters core;
 };
 
+// The estimator's parameters: names, fields and rules (estimator_ros_parameters.cpp).
+const ParameterTable<EstimatorRosParameters>& estimatorParameterTable();
+
 // Reads and validates the parameters of `private_node`. Throws vdc::Error naming the parameter
-// (e.g. "Parameter ~tf_timeout must be >= 0, got -1.") for a missing model, a wrong type, an
-// unknown segmentation mode or an out-of-range value.
+// (e.g. "Parameter ~tf_timeout must be a finite number >= 0, got -1.") for a missing model, a
+// wrong type, an unknown segmentation mode or an out-of-range value.
 EstimatorRosParameters readEstimatorRosParameters(const ros::NodeHandle& private_node);
 
 }  // namespace vdc

@@ -86,47 +86,24 @@ Eigen::Isometry3d fromPoseMsg(const geometry_msgs::Pose& msg, std::size_t index)
 
 InformativenessServerRos::InformativenessServerRos(ros::NodeHandle node,
                                                    ros::NodeHandle private_node)
-    : node_(node), private_node_(private_node), tf_listener_(tf_buffer_) {
-  std::string model_path;
-  if (!private_node_.getParam("model", model_path) || model_path.empty()) {
-    throw Error("Parameter " + private_node_.resolveName("model") +
-                " (path of the model bundle) is not set.");
-  }
-  fixed_frame_ = private_node_.param<std::string>("fixed_frame", "world");
-  object_frame_ = private_node_.param<std::string>("object_frame", "object");
-  label_best_ = private_node_.param("label_best", 3);
-  view_marker_distance_ = private_node_.param("view_marker_distance", 0.15);
-  occluder_radius_ = private_node_.param("occluder_radius", 0.005);
-  belief_samples_ = private_node_.param("belief_samples_per_component", 8);
-  tf_timeout_ = private_node_.param("tf_timeout", 0.2);
-  const double republish_period = private_node_.param("republish_period", 1.0);
-  if (fixed_frame_.empty() || object_frame_.empty()) {
-    throw Error("Parameters fixed_frame and object_frame must not be empty.");
-  }
-  if (label_best_ < 0) throw Error("Parameter label_best must be >= 0.");
-  if (!(std::isfinite(republish_period) && republish_period >= 0.0)) {
-    throw Error("Parameter republish_period must be a finite number >= 0 (0: latched once).");
-  }
-  if (!(view_marker_distance_ > 0.0) || !(occluder_radius_ > 0.0) || !(tf_timeout_ >= 0.0) ||
-      belief_samples_ < 0) {
-    throw Error(
-        "Parameters view_marker_distance and occluder_radius must be positive, tf_timeout and "
-        "belief_samples_per_component non-negative.");
-  }
-  model_ = std::make_shared<const ModelBundle>(loadModelBundle(model_path));
+    : node_(node),
+      private_node_(private_node),
+      parameters_(readInformativenessServerRosParameters(private_node)),
+      tf_listener_(tf_buffer_) {
+  model_ = std::make_shared<const ModelBundle>(loadModelBundle(parameters_.model_path));
   planner_ = std::make_unique<NextBestViewPlanner>(model_);
 
   heatmap_publisher_ = private_node_.advertise<sensor_msgs::PointCloud2>("heatmap", 1, true);
   view_scores_publisher_ =
       private_node_.advertise<visualization_msgs::MarkerArray>("view_scores", 1, true);
   publishScoreTopics();
-  if (republish_period > 0.0) {
+  if (parameters_.republish_period > 0.0) {
     // Latching alone is not enough for rviz: tf2 drops a stamp-0 message that arrives before its
     // frame exists, for good, as soon as the frame appears (BufferCore::testTransformableRequests
     // judges time 0 older than the cache). The object frame only exists after the first
     // estimate, so a viewer gets the heatmap within one period of learning the frame.
     republish_timer_ = private_node_.createWallTimer(
-        ros::WallDuration(republish_period), [this](const ros::WallTimerEvent&) {
+        ros::WallDuration(parameters_.republish_period), [this](const ros::WallTimerEvent&) {
           heatmap_publisher_.publish(heatmap_msg_);
           view_scores_publisher_.publish(view_scores_msg_);
         });
@@ -138,13 +115,13 @@ InformativenessServerRos::InformativenessServerRos(ros::NodeHandle node,
   estimate_subscriber_ =
       node_.subscribe("estimate", 1, &InformativenessServerRos::receiveEstimate, this);
   ROS_INFO("Informativeness server: model %s (%d views, %zu surface points), object frame %s in %s",
-           model_path.c_str(), planner_->viewCount(), model_->surface_points.size(),
-           object_frame_.c_str(), fixed_frame_.c_str());
+           parameters_.model_path.c_str(), planner_->viewCount(), model_->surface_points.size(),
+           parameters_.object_frame.c_str(), parameters_.fixed_frame.c_str());
 }
 
 void InformativenessServerRos::publishScoreTopics() {
   const Eigen::VectorXf& g = model_->global_scores;
-  heatmap_msg_ = colouredSurface(*model_, g, medianOfValid(g), object_frame_);
+  heatmap_msg_ = colouredSurface(*model_, g, medianOfValid(g), parameters_.object_frame);
   heatmap_publisher_.publish(heatmap_msg_);
 
   // One sphere per training direction on a sphere around the object, coloured by its view score
@@ -154,7 +131,7 @@ void InformativenessServerRos::publishScoreTopics() {
   const double black_at = medianOfValid(view_scores);
   visualization_msgs::MarkerArray markers;
   visualization_msgs::Marker sphere;
-  sphere.header.frame_id = object_frame_;
+  sphere.header.frame_id = parameters_.object_frame;
   sphere.ns = "view_scores";
   sphere.type = visualization_msgs::Marker::SPHERE;
   sphere.action = visualization_msgs::Marker::ADD;
@@ -162,8 +139,8 @@ void InformativenessServerRos::publishScoreTopics() {
   sphere.scale.x = sphere.scale.y = sphere.scale.z = 0.015;
   for (int m = 0; m < planner_->viewCount(); ++m) {
     sphere.id = m;
-    sphere.pose.position = tf2::toMsg(
-        Eigen::Vector3d(view_marker_distance_ * model_->view_directions[m].normalized()));
+    sphere.pose.position = tf2::toMsg(Eigen::Vector3d(parameters_.view_marker_distance *
+                                                      model_->view_directions[m].normalized()));
     sphere.color = toColour(heatmapColour(view_scores(m), black_at));
     markers.markers.push_back(sphere);
   }
@@ -173,15 +150,15 @@ void InformativenessServerRos::publishScoreTopics() {
   label.scale.x = label.scale.y = 0.0;
   label.scale.z = 0.012;  // text height [m]
   label.color = toColour({230, 60, 30});
-  const int labelled = std::min<int>(label_best_, informativeness.ranking.size());
+  const int labelled = std::min<int>(parameters_.label_best, informativeness.ranking.size());
   for (int rank = 0; rank < labelled; ++rank) {
     const int m = informativeness.ranking[rank];
     char text[64];
     std::snprintf(text, sizeof(text), "#%d view %d (%.2f)", rank + 1, m, view_scores(m));
     label.id = rank;
     label.text = text;
-    label.pose.position = tf2::toMsg(
-        Eigen::Vector3d((view_marker_distance_ + 0.02) * model_->view_directions[m].normalized()));
+    label.pose.position = tf2::toMsg(Eigen::Vector3d((parameters_.view_marker_distance + 0.02) *
+                                                     model_->view_directions[m].normalized()));
     markers.markers.push_back(label);
   }
   view_scores_msg_ = markers;
@@ -191,9 +168,9 @@ void InformativenessServerRos::publishScoreTopics() {
 void InformativenessServerRos::receiveEstimate(
     const view_direction_classification::BinghamMixture::ConstPtr& msg) {
   try {
-    if (!msg->header.frame_id.empty() && msg->header.frame_id != fixed_frame_) {
+    if (!msg->header.frame_id.empty() && msg->header.frame_id != parameters_.fixed_frame) {
       throw Error("it is in frame '" + msg->header.frame_id + "', not the fixed frame '" +
-                  fixed_frame_ + "'");
+                  parameters_.fixed_frame + "'");
     }
     BinghamMixture belief = fromBinghamMixtureMsg(*msg);
     const Eigen::Vector4d map = mapEstimate(belief);
@@ -207,13 +184,13 @@ void InformativenessServerRos::receiveEstimate(
 
 Eigen::Isometry3d InformativenessServerRos::lookupFixedFrom(const std::string& frame,
                                                             const char* what) const {
-  if (frame.empty() || frame == fixed_frame_) return Eigen::Isometry3d::Identity();
+  if (frame.empty() || frame == parameters_.fixed_frame) return Eigen::Isometry3d::Identity();
   try {
-    return toIsometry(
-        tf_buffer_.lookupTransform(fixed_frame_, frame, ros::Time(0), ros::Duration(tf_timeout_)));
+    return toIsometry(tf_buffer_.lookupTransform(parameters_.fixed_frame, frame, ros::Time(0),
+                                                 ros::Duration(parameters_.tf_timeout)));
   } catch (const tf2::TransformException& error) {
     throw Error(std::string("The ") + what + " are in frame '" + frame +
-                "', which tf cannot transform into the fixed frame '" + fixed_frame_ +
+                "', which tf cannot transform into the fixed frame '" + parameters_.fixed_frame +
                 "': " + error.what());
   }
 }
@@ -258,7 +235,7 @@ void InformativenessServerRos::answerHeatmap(const GetHeatmap::Request& request,
   response.median = medianOfValid(scores);
   response.max = maximumOfValid(scores);
   const double black_at = request.scaling == "max" ? response.max : response.median;
-  response.cloud = colouredSurface(*model_, scores, black_at, object_frame_);
+  response.cloud = colouredSurface(*model_, scores, black_at, parameters_.object_frame);
   response.scores.assign(scores.data(), scores.data() + scores.size());
   response.message =
       view < 0 ? "Global scores." : "Scores of training view " + std::to_string(view) + ".";
@@ -280,16 +257,17 @@ bool InformativenessServerRos::nextBestView(GetNextBestView::Request& request,
 void InformativenessServerRos::answerNextBestView(const GetNextBestView::Request& request,
                                                   GetNextBestView::Response& response) {
   const ViewUtility utility =
-      parseViewUtility(request.utility.empty() ? "informativeness" : request.utility);
+      request.utility.empty() ? parameters_.default_utility : parseViewUtility(request.utility);
   std::vector<std::string> notes;
 
   // The object's pose (published by the estimator, or by a simulator's ground truth).
   Eigen::Isometry3d world_from_object = Eigen::Isometry3d::Identity();
   try {
-    world_from_object = lookupFixedFrom(object_frame_, "object pose");
+    world_from_object = lookupFixedFrom(parameters_.object_frame, "object pose");
   } catch (const Error&) {
-    notes.push_back("The object frame '" + object_frame_ + "' is not available in tf; the object " +
-                    "was assumed at the origin of '" + fixed_frame_ + "' with identity rotation.");
+    notes.push_back("The object frame '" + parameters_.object_frame +
+                    "' is not available in tf; the object " + "was assumed at the origin of '" +
+                    parameters_.fixed_frame + "' with identity rotation.");
   }
 
   // Candidate camera poses in the fixed frame.
@@ -312,11 +290,12 @@ void InformativenessServerRos::answerNextBestView(const GetNextBestView::Request
   // The belief: the request's, else the latest estimate, else uniform.
   PlanningScene scene;
   scene.object_position = world_from_object.translation();
-  scene.occluder_radius = occluder_radius_;
+  scene.occluder_radius = parameters_.occluder_radius;
   if (request.use_belief) {
-    if (!request.belief.header.frame_id.empty() && request.belief.header.frame_id != fixed_frame_) {
+    if (!request.belief.header.frame_id.empty() &&
+        request.belief.header.frame_id != parameters_.fixed_frame) {
       throw Error("The request's belief is in frame '" + request.belief.header.frame_id +
-                  "', but beliefs must be in the fixed frame '" + fixed_frame_ + "'.");
+                  "', but beliefs must be in the fixed frame '" + parameters_.fixed_frame + "'.");
     }
     scene.belief = fromBinghamMixtureMsg(request.belief);
     scene.orientation = mapEstimate(scene.belief);
@@ -351,11 +330,11 @@ void InformativenessServerRos::answerNextBestView(const GetNextBestView::Request
   positions.reserve(candidates.size());
   for (const auto& pose : candidates) positions.push_back(pose.translation());
   NextBestViewOptions options;
-  options.samples_per_component = belief_samples_;
+  options.samples_per_component = parameters_.belief_samples_per_component;
   const std::vector<RankedCandidate> ranked =
       rankCandidates(*planner_, positions, utility, scene, options);
 
-  response.ranked.header.frame_id = fixed_frame_;
+  response.ranked.header.frame_id = parameters_.fixed_frame;
   response.ranked.header.stamp = ros::Time::now();
   for (const RankedCandidate& candidate : ranked) {
     response.ranked.poses.push_back(toPoseMsg(candidates[candidate.index]));

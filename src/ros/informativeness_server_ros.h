@@ -16,6 +16,7 @@
 #include <optional>
 #include <string>
 
+#include "informativeness_server_ros_parameters.h"
 #include "view_direction_classification/bingham/bingham_mixture.h"
 #include "view_direction_classification/planning/next_best_view.h"
 #include "view_direction_classification/training/model_bundle.h"
@@ -53,10 +54,7 @@ class InformativenessServerRos {
   void publishScoreTopics();
 
   ros::NodeHandle node_, private_node_;
-  std::string fixed_frame_, object_frame_;
-  int label_best_ = 3;
-  double view_marker_distance_ = 0.15, occluder_radius_ = 0.005, tf_timeout_ = 0.2;
-  int belief_samples_ = 8;
+  InformativenessServerRosParameters parameters_;
   std::shared_ptr<const ModelBundle> model_;
   std::unique_ptr<NextBestViewPlanner> planner_;
 

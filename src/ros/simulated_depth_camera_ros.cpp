@@ -18,19 +18,6 @@
 namespace vdc {
 namespace {
 
-std::vector<double> vectorParameter(const ros::NodeHandle& node, const std::string& name,
-                                    const std::vector<double>& fallback, std::size_t size) {
-  std::vector<double> values = node.param(name, fallback);
-  if (size > 0 && values.size() != size) {
-    throw Error("Parameter " + node.resolveName(name) + " must have " + std::to_string(size) +
-                " numbers, got " + std::to_string(values.size()) + ".");
-  }
-  for (double v : values) {
-    if (!std::isfinite(v)) throw Error("Parameter " + node.resolveName(name) + " is not finite.");
-  }
-  return values;
-}
-
 // Object pose from [x, y, z, roll, pitch, yaw] (rotation R = Rz(yaw) Ry(pitch) Rx(roll), the
 // REP 103 fixed-axis convention).
 Eigen::Isometry3d poseFromXyzRpy(const std::vector<double>& v) {
@@ -57,55 +44,31 @@ geometry_msgs::TransformStamped toTransformMsg(const Eigen::Isometry3d& parent_f
 
 SimulatedDepthCameraRos::SimulatedDepthCameraRos(ros::NodeHandle node, ros::NodeHandle private_node)
     : node_(node), private_node_(private_node) {
-  fixed_frame_ = private_node_.param<std::string>("fixed_frame", "world");
-  camera_frame_ = private_node_.param<std::string>("camera_frame", "camera_optical_frame");
-  object_frame_ = private_node_.param<std::string>("object_frame", "object_ground_truth");
-  publish_object_tf_ = private_node_.param("publish_object_tf", true);
-  if (fixed_frame_.empty() || camera_frame_.empty() || object_frame_.empty()) {
-    throw Error("Parameters fixed_frame, camera_frame and object_frame must not be empty.");
-  }
-
-  const std::string mesh = private_node_.param<std::string>("mesh", "mug");
-  renderer_ = std::make_unique<DepthRenderer>(mesh == "mug" ? makeMug() : loadMesh(mesh));
-  world_from_object_ = poseFromXyzRpy(
-      vectorParameter(private_node_, "object_pose", {0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, 6));
-
-  noise_.enabled = private_node_.param("noise", true);
-  const int seed = private_node_.param("seed", 1);
-  rng_.seed(static_cast<std::uint32_t>(seed));
-
-  visibility_radius_ = private_node_.param("visibility_radius", 0.0);
-  if (!std::isfinite(visibility_radius_)) throw Error("Parameter visibility_radius is not finite.");
-  const std::vector<double> anchors = vectorParameter(private_node_, "visibility_anchors", {}, 0);
-  if (anchors.size() % 3 != 0) {
-    throw Error("Parameter visibility_anchors must list x, y, z triples, got " +
-                std::to_string(anchors.size()) + " numbers.");
-  }
-  for (std::size_t i = 0; i < anchors.size(); i += 3) {
-    visibility_anchors_.emplace_back(anchors[i], anchors[i + 1], anchors[i + 2]);
+  const SimulatedDepthCameraRosParameters p = readSimulatedDepthCameraRosParameters(private_node_);
+  fixed_frame_ = p.fixed_frame;
+  camera_frame_ = p.camera_frame;
+  object_frame_ = p.object_frame;
+  publish_object_tf_ = p.publish_object_tf;
+  renderer_ = std::make_unique<DepthRenderer>(p.mesh == "mug" ? makeMug() : loadMesh(p.mesh));
+  world_from_object_ = poseFromXyzRpy(p.object_pose);
+  noise_.enabled = p.noise;
+  rng_.seed(static_cast<std::uint32_t>(p.seed));
+  visibility_radius_ = p.visibility_radius;
+  for (std::size_t i = 0; i < p.visibility_anchors.size(); i += 3) {
+    visibility_anchors_.emplace_back(p.visibility_anchors[i], p.visibility_anchors[i + 1],
+                                     p.visibility_anchors[i + 2]);
   }
   if (visibility_anchors_.empty()) visibility_anchors_ = mugHandleAnchors();
-
-  const std::vector<double> direction =
-      vectorParameter(private_node_, "view_direction", {1.0, 0.0, 0.5}, 3);
-  const double distance = private_node_.param("distance", 0.6);
-  const double roll = private_node_.param("roll", 0.0);
+  const Eigen::Vector3d direction(p.view_direction[0], p.view_direction[1], p.view_direction[2]);
   world_from_camera_ =
-      world_from_object_ *
-      cameraFromObject(Eigen::Vector3d(direction[0], direction[1], direction[2]), distance, roll)
-          .inverse();
-
-  const double rate = private_node_.param("rate", 2.0);
-  if (!(rate > 0.0) || !std::isfinite(rate)) {
-    throw Error("Parameter rate must be positive and finite, got " + std::to_string(rate) + " Hz.");
-  }
+      world_from_object_ * cameraFromObject(direction, p.distance, p.roll).inverse();
 
   cloud_publisher_ = private_node_.advertise<sensor_msgs::PointCloud2>("cloud", 1);
   move_service_ = private_node_.advertiseService("move_to", &SimulatedDepthCameraRos::moveTo, this);
   timer_ =
-      node_.createTimer(ros::Duration(1.0 / rate), &SimulatedDepthCameraRos::publishView, this);
+      node_.createTimer(ros::Duration(1.0 / p.rate), &SimulatedDepthCameraRos::publishView, this);
   ROS_INFO("Simulated depth camera: mesh %s, %s -> %s at %.1f Hz, noise %s, visibility crop %s",
-           mesh.c_str(), fixed_frame_.c_str(), camera_frame_.c_str(), rate,
+           p.mesh.c_str(), fixed_frame_.c_str(), camera_frame_.c_str(), p.rate,
            noise_.enabled ? "on" : "off",
            visibility_radius_ > 0.0 ? (std::to_string(visibility_radius_) + " m").c_str() : "off");
 }

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "simulated_depth_camera_ros_parameters.h"
 #include "view_direction_classification/geometry/depth_noise.h"
 #include "view_direction_classification/geometry/depth_renderer.h"
 

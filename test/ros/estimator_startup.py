@@ -1,67 +1,73 @@
 #!/usr/bin/python3
 """rostest: the orientation_estimator refuses a bad start-up with one FATAL line and exit code 1
-(no crash, no restart loop), for a missing model and for an invalid parameter."""
+(no crash, no restart loop), for a missing model and for an invalid parameter, and starts with
+its config/estimator.yaml."""
 
-import itertools
 import os
-import subprocess
 import tempfile
 import unittest
 
-import roslib.packages
+import rospy
 import rostest
 
-PACKAGE = "view_direction_classification"
+from node_startup import PACKAGE, assert_refused, assert_starts, fatal_lines, run_node
 
-
-RUNS = itertools.count()
-
-
-def run_estimator(*parameters):
-    """Runs the node binary in the test's ROS graph under a fresh name (private parameters set
-    with _name:=value stay on the parameter server); returns (exit code, stdout + stderr)."""
-    name = "__name:=estimator_under_test_%d" % next(RUNS)
-    # Found as roslaunch finds nodes: rosrun skips executables below <package>/build/, which is
-    # where `make test` builds.
-    executables = roslib.packages.find_node(PACKAGE, "orientation_estimator")
-    if not executables:
-        raise RuntimeError("the orientation_estimator binary is not built")
-    result = subprocess.run(
-        [executables[0], name, *parameters],
-        stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=60, check=False)
-    return result.returncode, result.stdout.decode(errors="replace")
+NODE = "orientation_estimator"
 
 
 class EstimatorStartup(unittest.TestCase):
     def test_missing_model_exits_with_status_1_and_a_fatal_line_naming_the_file(self):
-        code, output = run_estimator("_model:=/nonexistent/mug_model.h5")
+        code, output = run_node(NODE, "_model:=/nonexistent/mug_model.h5")
         self.assertEqual(code, 1, output)
-        fatal = [line for line in output.splitlines() if "FATAL" in line]
+        fatal = fatal_lines(output)
         self.assertEqual(len(fatal), 1, output)
         self.assertIn("/nonexistent/mug_model.h5", fatal[0])
+
+    def test_unset_model_is_refused_naming_the_parameter(self):
+        assert_refused(self, NODE, ["~model", "is required"])
 
     def test_corrupt_model_exits_with_status_1(self):
         with tempfile.NamedTemporaryFile(suffix=".h5") as corrupt:
             corrupt.write(b"this is not an HDF5 file\n" * 10)
             corrupt.flush()
-            code, output = run_estimator("_model:=" + corrupt.name)
+            code, output = run_node(NODE, "_model:=" + corrupt.name)
         self.assertEqual(code, 1, output)
         self.assertIn(os.path.basename(corrupt.name), output)
 
     def test_invalid_parameter_exits_with_status_1_naming_the_parameter(self):
-        code, output = run_estimator("_model:=/nonexistent.h5", "_tf_timeout:=-1.0")
+        code, output = run_node(NODE, "_model:=/nonexistent.h5", "_tf_timeout:=-1.0")
         self.assertEqual(code, 1, output)
         self.assertIn("~tf_timeout", output)
 
     def test_negative_tf_rate_is_refused_naming_the_parameter(self):
-        code, output = run_estimator("_model:=/nonexistent.h5", "_tf_rate:=-1.0")
+        code, output = run_node(NODE, "_model:=/nonexistent.h5", "_tf_rate:=-1.0")
         self.assertEqual(code, 1, output)
         self.assertIn("~tf_rate", output)
 
     def test_unknown_segmentation_mode_is_refused(self):
-        code, output = run_estimator("_model:=/nonexistent.h5", "_segmentation:=magic")
+        code, output = run_node(NODE, "_model:=/nonexistent.h5", "_segmentation:=magic")
         self.assertEqual(code, 1, output)
         self.assertIn("~segmentation", output)
+
+    def test_a_value_of_the_wrong_type_is_refused_not_replaced_by_the_default(self):
+        assert_refused(self, NODE, ["~kappa", "must be a number", "got a string ('high')"],
+                       "_model:=/nonexistent.h5", "_kappa:=high")
+        assert_refused(self, NODE, ["~max_components", "must be an integer", "got a number (50.0)"],
+                       "_model:=/nonexistent.h5", "_max_components:=50.0")
+        assert_refused(self, NODE, ["~publish_tf", "true or false"],
+                       "_model:=/nonexistent.h5", "_publish_tf:=1")
+
+    def test_out_of_range_core_values_are_refused_naming_the_parameter(self):
+        for parameter, value, shown in [("n_feat", -1, "-1"), ("max_components", 0, "0"),
+                                        ("min_weight", 1.0, "1"),
+                                        ("belief_weight_floor", -0.1, "-0.1"),
+                                        ("roi_centre", [0.0, 1.0], "[0, 1]")]:
+            assert_refused(self, NODE, ["~" + parameter, "got %s." % shown],
+                           "_model:=/nonexistent.h5", preset={parameter: value})
+
+    def test_starts_with_its_config_file(self):
+        assert_starts(self, NODE, "estimator.yaml", "reset",
+                      "_model:=" + rospy.get_param("/startup_test_model"))
 
 
 if __name__ == "__main__":
