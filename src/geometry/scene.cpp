@@ -1,0 +1,80 @@
+#include "view_direction_classification/geometry/scene.h"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "view_direction_classification/common/error.h"
+#include "view_direction_classification/geometry/mesh_io.h"
+#include "view_direction_classification/geometry/primitive_meshes.h"
+
+namespace vdc {
+namespace {
+
+TriangleMesh transformed(const TriangleMesh& mesh, const Eigen::Isometry3d& pose) {
+  if (!pose.matrix().allFinite()) throw Error("a scene part's pose is not finite");
+  TriangleMesh result = mesh;
+  const Eigen::Isometry3f pose_f = pose.cast<float>();
+  for (Eigen::Vector3f& v : result.vertices) v = pose_f * v;
+  return result;
+}
+
+// The numbers after a primitive's keyword; throws unless there are exactly `count`.
+std::vector<double> primitiveSizes(std::istringstream& stream, std::size_t count) {
+  std::vector<double> sizes;
+  for (double value; stream >> value;) sizes.push_back(value);
+  if (!stream.eof() || sizes.size() != count) {
+    throw Error("expected " + std::to_string(count) + " sizes in metres after the shape's name");
+  }
+  return sizes;
+}
+
+}  // namespace
+
+double tableHeight(const Scene& scene) {
+  if (scene.object.mesh.vertices.empty()) throw Error("the scene's object has no vertices");
+  double lowest = std::numeric_limits<double>::infinity();
+  for (const Eigen::Vector3f& v : scene.object.mesh.vertices) {
+    lowest = std::min(lowest, (scene.object.world_from_part * v.cast<double>()).z());
+  }
+  return lowest;
+}
+
+TriangleMesh sceneMesh(const Scene& scene) {
+  TriangleMesh mesh = transformed(scene.object.mesh, scene.object.world_from_part);
+  if (scene.table_size) {
+    Eigen::Isometry3d world_from_table = Eigen::Isometry3d::Identity();
+    const Eigen::Vector3d object_origin = scene.object.world_from_part.translation();
+    world_from_table.translation() =
+        Eigen::Vector3d(object_origin.x(), object_origin.y(), tableHeight(scene));
+    mesh.append(transformed(makeRectangleMesh(*scene.table_size), world_from_table));
+  }
+  for (const ScenePart& part : scene.distractors) {
+    mesh.append(transformed(part.mesh, part.world_from_part));
+  }
+  return mesh;
+}
+
+TriangleMesh distractorMesh(const std::string& description) {
+  std::istringstream stream(description);
+  std::string shape;
+  stream >> shape;
+  try {
+    if (shape == "box") {
+      const std::vector<double> s = primitiveSizes(stream, 3);
+      return makeBoxMesh(Eigen::Vector3d(s[0], s[1], s[2]));
+    }
+    if (shape == "cylinder") {
+      const std::vector<double> s = primitiveSizes(stream, 2);
+      return makeCylinderMesh(s[0], s[1]);
+    }
+  } catch (const Error& error) {
+    throw Error("distractor '" + description + "': " + error.what());
+  }
+  if (description.empty()) {
+    throw Error("a distractor needs a description: box SX SY SZ, cylinder R H or a mesh file");
+  }
+  return loadMesh(description);
+}
+
+}  // namespace vdc

@@ -1,0 +1,95 @@
+#include "view_direction_classification/geometry/scene.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "view_direction_classification/common/error.h"
+#include "view_direction_classification/geometry/camera.h"
+#include "view_direction_classification/geometry/depth_renderer.h"
+#include "view_direction_classification/geometry/mesh_check.h"
+#include "view_direction_classification/geometry/mug_mesh.h"
+#include "view_direction_classification/geometry/primitive_meshes.h"
+
+namespace vdc {
+namespace {
+
+Eigen::Isometry3d poseAt(const Eigen::Vector3d& translation, double yaw = 0.0) {
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.linear() = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  pose.translation() = translation;
+  return pose;
+}
+
+TEST(PrimitiveMeshes, BoxAndCylinderAreClosedOutwardSolidsStandingOnZeroWithTheirSizes) {
+  const TriangleMesh box = makeBoxMesh(Eigen::Vector3d(0.1, 0.2, 0.3));
+  EXPECT_TRUE(checkMesh(box).watertight);
+  EXPECT_NEAR(box.signedVolume(), 0.1 * 0.2 * 0.3, 1e-9);
+  EXPECT_NEAR(box.bounds().min().z(), 0.0, 1e-9);
+  EXPECT_NEAR(box.bounds().max().z(), 0.3, 1e-7);
+  EXPECT_NEAR(box.bounds().center().x(), 0.0, 1e-9);
+
+  const TriangleMesh cylinder = makeCylinderMesh(0.03, 0.2, 64);
+  const MeshCheck check = checkMesh(cylinder);
+  EXPECT_TRUE(check.watertight);
+  EXPECT_EQ(check.inconsistent_edges, 0u);
+  // The inscribed 64-gon's area is (64/2) sin(2 pi/64) r^2.
+  EXPECT_NEAR(cylinder.signedVolume(), 32 * std::sin(2 * M_PI / 64) * 0.03 * 0.03 * 0.2, 1e-9);
+  EXPECT_NEAR(cylinder.bounds().min().z(), 0.0, 1e-9);
+}
+
+TEST(PrimitiveMeshes, RefuseSizesThatAreNotPositiveLengths) {
+  EXPECT_THROW(makeBoxMesh(Eigen::Vector3d(0.1, 0.0, 0.1)), Error);
+  EXPECT_THROW(makeBoxMesh(Eigen::Vector3d(0.1, NAN, 0.1)), Error);
+  EXPECT_THROW(makeCylinderMesh(-0.1, 0.1), Error);
+  EXPECT_THROW(makeCylinderMesh(0.1, 0.1, 3), Error);
+  EXPECT_THROW(makeRectangleMesh(Eigen::Vector2d(1.0, INFINITY)), Error);
+}
+
+TEST(Scene, TableStandsUnderTheObjectsLowestPointAndEveryPartIsPlacedInTheFixedFrame) {
+  Scene scene;
+  scene.object.mesh = makeMug();
+  scene.object.world_from_part = poseAt(Eigen::Vector3d(0.5, -0.2, 0.8), 1.0);
+  scene.table_size = Eigen::Vector2d(1.0, 0.6);
+  scene.distractors.push_back({makeBoxMesh(Eigen::Vector3d(0.05, 0.05, 0.1)),
+                               poseAt(Eigen::Vector3d(0.7, -0.2, 0.8 - 0.0475))});
+  // The upright mug's bottom is 9.5 / 2 cm below its origin.
+  EXPECT_NEAR(tableHeight(scene), 0.8 - 0.0475, 1e-6);
+  const TriangleMesh mesh = sceneMesh(scene);
+  EXPECT_EQ(mesh.triangles.size(), scene.object.mesh.triangles.size() + 2 + 12);
+  const Eigen::AlignedBox3f bounds = mesh.bounds();
+  EXPECT_NEAR(bounds.min().x(), 0.0, 1e-6);  // the table spans 0.5 +- 0.5 in x
+  EXPECT_NEAR(bounds.max().y(), 0.1, 1e-6);  // and -0.2 +- 0.3 in y
+  EXPECT_NEAR(bounds.min().z(), 0.8 - 0.0475, 1e-6);
+
+  // A camera 0.6 m above the table looking straight down sees the table at its height around
+  // the mug and the box's top 10 cm above it.
+  Eigen::Isometry3d world_from_camera = Eigen::Isometry3d::Identity();
+  world_from_camera.linear() = Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  world_from_camera.translation() = Eigen::Vector3d(0.6, -0.2, 0.8 + 0.6);
+  const DepthRenderer renderer(mesh);
+  const auto cloud = renderer.render(world_from_camera.inverse());
+  int table = 0, box_top = 0;
+  for (const auto& p : cloud.points) {
+    if (!std::isfinite(p.z)) continue;
+    const double z = (world_from_camera * p.getVector3fMap().cast<double>()).z();
+    if (std::abs(z - (0.8 - 0.0475)) < 1e-4) ++table;
+    if (std::abs(z - (0.8 - 0.0475 + 0.1)) < 1e-4) ++box_top;
+  }
+  EXPECT_GT(table, 100000);
+  EXPECT_GT(box_top, 1000);  // 5 x 5 cm at 0.5 m: ~ 2750 pixels
+}
+
+TEST(Scene, DistractorDescriptionsNameBoxesCylindersOrMeshFiles) {
+  EXPECT_NEAR(distractorMesh("box 0.1 0.2 0.3").signedVolume(), 0.006, 1e-9);
+  EXPECT_NEAR(distractorMesh("cylinder 0.03 0.2").bounds().max().z(), 0.2, 1e-7);
+  EXPECT_THROW(distractorMesh("box 0.1 0.2"), Error);
+  EXPECT_THROW(distractorMesh("box 0.1 0.2 0.3 0.4"), Error);
+  EXPECT_THROW(distractorMesh("cylinder 0.03 tall"), Error);
+  EXPECT_THROW(distractorMesh("box 0.1 -0.2 0.3"), Error);
+  EXPECT_THROW(distractorMesh(""), Error);
+  EXPECT_THROW(distractorMesh("/no/such/mesh.ply"), Error);
+}
+
+}  // namespace
+}  // namespace vdc
