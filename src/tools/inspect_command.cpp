@@ -43,6 +43,8 @@ nlohmann::json describe(const ModelBundle& bundle, const std::string& path) {
       {"seed", bundle.parameters.seed},
       {"classifier_clusters", bundle.parameters.clusters},
       {"surface_points", static_cast<int>(bundle.surface_points.size())},
+      {"extent_m",
+       {bundle.bounds.sizes().x(), bundle.bounds.sizes().y(), bundle.bounds.sizes().z()}},
       {"observable_surface_points", observable},
       {"held_out_accuracy", bundle.held_out.accuracy},
       {"held_out_log_loss", bundle.held_out.log_loss},
@@ -63,6 +65,10 @@ void printText(const nlohmann::json& j) {
               j["clouds_per_view"].get<int>(), j["seed"].get<unsigned>());
   std::printf("  surface points      %d (%d observable)\n", j["surface_points"].get<int>(),
               j["observable_surface_points"].get<int>());
+  const auto& extent = j["extent_m"];
+  std::printf("  extent              %.1f x %.1f x %.1f cm (bounding box, object frame)\n",
+              100.0 * extent[0].get<double>(), 100.0 * extent[1].get<double>(),
+              100.0 * extent[2].get<double>());
   std::printf("  held-out accuracy   %.3f (chance %.3f) on %zu features\n",
               j["held_out_accuracy"].get<double>(), 1.0 / j["views"].get<int>(),
               j["held_out_features"].get<std::size_t>());

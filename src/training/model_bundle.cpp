@@ -14,9 +14,10 @@
 #include "hdf5_file.h"
 #include "view_direction_classification/common/error.h"
 
-// File layout (format version 1). M views, N surface points, d descriptor dimensions, K clusters.
+// File layout (format version 2; version 1 lacks surface/bounds). M views, N surface points, d
+// descriptor dimensions, K clusters.
 //   /                          attributes format = "view_direction_classification model bundle",
-//                              format_version = 1
+//                              format_version = 2
 //   /parameters                attributes: one per TrainingParameters field, same names
 //   /views/directions          M x 3 float64, unit viewing directions, object frame
 //   /views/centroid_offsets    M x 3 float64, mean visible-part centroid per direction
@@ -26,6 +27,7 @@
 //   /classifier/weights        K(d+1) x M float64: cluster k's logistic regression in rows
 //                              k(d+1) .. k(d+1)+d, the last of them the bias
 //   /surface/points, normals   N x 3 float32, object frame
+//   /surface/bounds            2 x 3 float64, the mesh's bounding box: min corner, max corner
 //   /informativeness/view_scores    M float64, v(m), -1 for views without clouds
 //   /informativeness/ranking        <= M int32, views by ascending score
 //   /informativeness/confusion      M x M float64, C[m', m]
@@ -139,6 +141,21 @@ class Checker {
   std::string prefix_;
 };
 
+Eigen::MatrixXd boundsMatrix(const Eigen::AlignedBox3d& bounds) {
+  Eigen::MatrixXd matrix(2, 3);
+  matrix.row(0) = bounds.min().transpose();
+  matrix.row(1) = bounds.max().transpose();
+  return matrix;
+}
+
+// Bundles of format version 1 carry no bounds: the surface samples' box is within one sample
+// spacing of the mesh's.
+Eigen::AlignedBox3d boundsOfPoints(const std::vector<Eigen::Vector3f>& points) {
+  Eigen::AlignedBox3d bounds;
+  for (const Eigen::Vector3f& p : points) bounds.extend(p.cast<double>());
+  return bounds;
+}
+
 template <typename Parameters, typename Visit>
 void forEachParameter(Parameters& p, Visit&& visit) {
   visit("mesh_name", p.mesh_name);
@@ -201,6 +218,10 @@ void checkBundle(const Checker& check, const ModelBundle& b, const ClassifierArr
   const auto N = static_cast<Eigen::Index>(b.surface_points.size());
   check.matrix("surface/points", toMatrix(b.surface_points), N, 3);
   check.matrix("surface/normals", toMatrix(b.surface_normals), N, 3);
+  check.matrix("surface/bounds", boundsMatrix(b.bounds), 2, 3);
+  if ((b.bounds.min().array() > b.bounds.max().array()).any()) {
+    check.fail("dataset surface/bounds has a minimum above its maximum");
+  }
 
   const ViewInformativeness& info = b.view_informativeness;
   check.vector("informativeness/view_scores", info.view_scores, M);
@@ -257,6 +278,7 @@ void writeBundle(Hdf5File& file, const ModelBundle& b, const ClassifierArrays& c
   file.createGroup("surface");
   file.writeMatrix<float>("surface/points", toMatrix(b.surface_points));
   file.writeMatrix<float>("surface/normals", toMatrix(b.surface_normals));
+  file.writeMatrix<double>("surface/bounds", boundsMatrix(b.bounds));
 
   const ViewInformativeness& info = b.view_informativeness;
   file.createGroup("informativeness");
@@ -291,7 +313,8 @@ T readInteger(const Hdf5File& file, const Checker& check, const std::string& obj
   return static_cast<T>(value);
 }
 
-ModelBundle readBundle(const Hdf5File& file, const Checker& check, ClassifierArrays* c) {
+ModelBundle readBundle(const Hdf5File& file, const Checker& check, std::int64_t version,
+                       ClassifierArrays* c) {
   ModelBundle b;
   forEachParameter(b.parameters, [&](const char* name, auto& value) {
     using T = std::decay_t<decltype(value)>;
@@ -332,6 +355,13 @@ ModelBundle readBundle(const Hdf5File& file, const Checker& check, ClassifierArr
   check.matrix("surface/normals", normals, points.rows(), 3);
   b.surface_points = toPoints<float>(points);
   b.surface_normals = toPoints<float>(normals);
+  if (version >= 2) {
+    const Eigen::MatrixXd bounds = file.readMatrix<double>("surface/bounds");
+    check.matrix("surface/bounds", bounds, 2, 3);
+    b.bounds = Eigen::AlignedBox3d(bounds.row(0).transpose(), bounds.row(1).transpose());
+  } else {
+    b.bounds = boundsOfPoints(b.surface_points);
+  }
 
   ViewInformativeness& info = b.view_informativeness;
   info.view_scores = file.readVector<double>("informativeness/view_scores");
@@ -398,7 +428,7 @@ ModelBundle loadModelBundle(const std::string& path) {
   if (version < 1) check.fail("invalid format version " + std::to_string(version));
 
   ClassifierArrays arrays;
-  ModelBundle bundle = readBundle(file, check, &arrays);
+  ModelBundle bundle = readBundle(file, check, version, &arrays);
   checkBundle(check, bundle, arrays);
   try {
     bundle.classifier = classifierOf(arrays);

@@ -157,6 +157,8 @@ ModelBundle trainModel(const TriangleMesh& mesh, const TrainingParameters& param
   const SurfaceSamples surface = sampleSurface(mesh, parameters.surface_spacing, parameters.seed);
   bundle.surface_points = surface.points;
   bundle.surface_normals = surface.normals;
+  const Eigen::AlignedBox3f bounds = mesh.bounds();
+  bundle.bounds = Eigen::AlignedBox3d(bounds.min().cast<double>(), bounds.max().cast<double>());
   bundle.score_matrix =
       computeScoreMatrix(surface.points, scores, sphere.size(), parameters.score_radius);
   bundle.global_scores = globalScores(bundle.score_matrix);

@@ -60,6 +60,8 @@ ModelBundle makeBundle() {
   b.global_scores = random(N, 1).cwiseAbs().cast<float>();
   b.global_scores(5) = -1.0f;
   b.centroid_offsets = random(M, 3);
+  b.bounds = Eigen::AlignedBox3d(Eigen::Vector3d(-0.04, -0.04, -0.0475),
+                                 Eigen::Vector3d(0.071, 0.04, 0.0475));
   b.held_out = HeldOutMetrics{0.123456789, 2.718281828, 987654321};
   return b;
 }
@@ -148,6 +150,8 @@ TEST_F(ModelBundleFiles, RoundTripIsBitIdentical) {
   EXPECT_EQ(saved.score_matrix, loaded.score_matrix);
   EXPECT_EQ(saved.global_scores, loaded.global_scores);
   EXPECT_EQ(saved.centroid_offsets, loaded.centroid_offsets);
+  EXPECT_EQ(saved.bounds.min(), loaded.bounds.min());
+  EXPECT_EQ(saved.bounds.max(), loaded.bounds.max());
   EXPECT_EQ(saved.held_out.accuracy, loaded.held_out.accuracy);
   EXPECT_EQ(saved.held_out.log_loss, loaded.held_out.log_loss);
   EXPECT_EQ(saved.held_out.features, loaded.held_out.features);
@@ -206,11 +210,40 @@ TEST_F(ModelBundleFiles, RefusesForeignHdf5File) {
 TEST_F(ModelBundleFiles, RefusesNewerFormatVersion) {
   const std::string path = editedBundle("newer.h5", [](hid_t id) {
     const hid_t attribute = H5Aopen_by_name(id, "/", "format_version", H5P_DEFAULT, H5P_DEFAULT);
-    const std::int64_t version = 2;
+    const std::int64_t version = ModelBundle::kFormatVersion + 1;
     H5Awrite(attribute, H5T_NATIVE_INT64, &version);
     H5Aclose(attribute);
   });
-  EXPECT_EQ(loadError(path), path + ": written by format version 2, this build reads up to 1");
+  EXPECT_EQ(loadError(path), path + ": written by format version 3, this build reads up to 2");
+}
+
+// Format version 1 had no surface/bounds: such a bundle still loads, its extent taken from the
+// surface samples.
+TEST_F(ModelBundleFiles, LoadsAVersionOneBundleWithTheSurfaceSamplesBoundingBox) {
+  const std::string path = editedBundle("version1.h5", [](hid_t id) {
+    H5Ldelete(id, "surface/bounds", H5P_DEFAULT);
+    const hid_t attribute = H5Aopen_by_name(id, "/", "format_version", H5P_DEFAULT, H5P_DEFAULT);
+    const std::int64_t version = 1;
+    H5Awrite(attribute, H5T_NATIVE_INT64, &version);
+    H5Aclose(attribute);
+  });
+  const ModelBundle loaded = loadModelBundle(path);
+  Eigen::AlignedBox3d expected;
+  for (const Eigen::Vector3f& p : makeBundle().surface_points) expected.extend(p.cast<double>());
+  EXPECT_EQ(loaded.bounds.min(), expected.min());
+  EXPECT_EQ(loaded.bounds.max(), expected.max());
+}
+
+TEST_F(ModelBundleFiles, RefusesAVersionTwoBundleWithoutBounds) {
+  const std::string path =
+      editedBundle("nobounds.h5", [](hid_t id) { H5Ldelete(id, "surface/bounds", H5P_DEFAULT); });
+  EXPECT_EQ(loadError(path), path + ": dataset surface/bounds is missing");
+}
+
+TEST_F(ModelBundleFiles, RefusesBoundsWhoseMinimumLiesAboveTheirMaximum) {
+  ModelBundle bundle = makeBundle();
+  bundle.bounds = Eigen::AlignedBox3d();  // empty: min = +max double, max = lowest
+  EXPECT_THROW(saveModelBundle(bundle, path("empty_bounds.h5")), Error);
 }
 
 TEST_F(ModelBundleFiles, RefusesWrongShape) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <cstdint>
 #include <string>
@@ -34,11 +35,15 @@ struct TrainingParameters {
 // The trained model of one object: classifier and informativeness (doc/method.md, "Model
 // bundle"). M = view_directions.size(), N = surface_points.size().
 struct ModelBundle {
-  static constexpr int kFormatVersion = 1;
+  // 2 added surface/bounds; version-1 files still load (bounds from the surface points).
+  static constexpr int kFormatVersion = 2;
   TrainingParameters parameters;
   std::vector<Eigen::Vector3d> view_directions;                  // M, object frame, unit
   ViewClassifier classifier;                                     // trained, over M views
   std::vector<Eigen::Vector3f> surface_points, surface_normals;  // N
+  // The object's extent: the axis-aligned bounding box of the mesh in the object frame (tabletop
+  // segmentation takes the cluster whose size fits it).
+  Eigen::AlignedBox3d bounds;
   ViewInformativeness view_informativeness;                      // v (M), ranking, C (M x M)
   Eigen::MatrixXf score_matrix;                                  // K, N x M
   Eigen::VectorXf global_scores;                                 // g, N
