@@ -3,16 +3,16 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <random>
+#include <cstdio>
 #include <string>
 #include <utility>
 
 #include "view_direction_classification/common/error.h"
-#include "view_direction_classification/learning/feature_selection.h"
-#include "view_direction_classification/features/fpfh_features.h"
-#include "view_direction_classification/training/model_training.h"
 #include "view_direction_classification/common/quaternion.h"
 #include "view_direction_classification/estimation/view_measurement.h"
+#include "view_direction_classification/features/fpfh_features.h"
+#include "view_direction_classification/learning/feature_selection.h"
+#include "view_direction_classification/training/model_training.h"
 
 namespace vdc {
 namespace {
@@ -35,6 +35,35 @@ double meanNeighbourAngle(const std::vector<Eigen::Vector3d>& directions) {
     sum += std::acos(std::clamp(best, -1.0, 1.0));
   }
   return sum / static_cast<double>(directions.size());
+}
+
+// Below this likelihood exponent a view adds (next to) nothing to the belief: it is not new.
+constexpr double kMinLikelihoodExponent = 0.01;
+// Hypotheses per belief component for the information-gain test (as the next-best-view service's
+// default).
+constexpr int kGainSamplesPerComponent = 8;
+
+double largestCentroidOffset(const ModelBundle& model) {
+  return model.centroid_offsets.rows() > 0 ? model.centroid_offsets.rowwise().norm().maxCoeff()
+                                           : 0.0;
+}
+
+// The largest distance of the bounding box's corners from the object's origin.
+double boundingRadius(const Eigen::AlignedBox3d& bounds) {
+  double radius = 0.0;
+  for (int corner = 0; corner < 8; ++corner) {
+    radius = std::max(radius,
+                      bounds.corner(static_cast<Eigen::AlignedBox3d::CornerType>(corner)).norm());
+  }
+  return radius;
+}
+
+// A plane n . x + d = 0 of the camera frame in the fixed frame.
+Eigen::Vector4d planeInWorld(const Eigen::Vector4d& plane,
+                             const Eigen::Isometry3d& world_from_camera) {
+  const Eigen::Vector3d normal = world_from_camera.linear() * plane.head<3>();
+  return Eigen::Vector4d(normal.x(), normal.y(), normal.z(),
+                         plane(3) - normal.dot(world_from_camera.translation()));
 }
 
 // The smallest rotation taking unit vector `from` onto unit vector `to`, as a (w, x, y, z)
@@ -68,7 +97,12 @@ void checkParameters(const EstimatorParameters& p) {
                 std::to_string(p.belief_weight_floor));
   }
   if (!std::isfinite(p.kappa)) throw Error("kappa must be finite");
+  if (!(p.max_object_shift >= 0.0) || !std::isfinite(p.max_object_shift)) {
+    throw Error("max_object_shift must be a finite length >= 0, got " +
+                std::to_string(p.max_object_shift));
+  }
   checkSegmentationParameters(p.segmentation);
+  checkFrameSelectionParameters(p.selection);
 }
 
 }  // namespace
@@ -78,6 +112,9 @@ OrientationEstimator::OrientationEstimator(std::shared_ptr<const ModelBundle> mo
     : model_(std::move(model)),
       parameters_(std::move(parameters)),
       kappa_(0.0),
+      min_view_separation_(0.0),
+      independent_view_separation_(0.0),
+      max_object_shift_(0.0),
       filter_(filterOptionsOf(parameters_)) {
   if (!model_) throw Error("the orientation estimator needs a model bundle");
   if (model_->view_directions.size() < 2) {
@@ -85,37 +122,100 @@ OrientationEstimator::OrientationEstimator(std::shared_ptr<const ModelBundle> mo
   }
   checkParameters(parameters_);
   if (parameters_.n_feat <= 0) parameters_.n_feat = model_->parameters.n_feat;
-  kappa_ = parameters_.kappa > 0.0
-               ? parameters_.kappa
-               : defaultViewConcentration(meanNeighbourAngle(model_->view_directions));
+  const double spacing = meanNeighbourAngle(model_->view_directions);
+  kappa_ = parameters_.kappa > 0.0 ? parameters_.kappa : defaultViewConcentration(spacing);
+
+  const FrameSelectionParameters& selection = parameters_.selection;
+  min_view_separation_ =
+      selection.min_view_separation < 0.0 ? 0.5 * spacing : selection.min_view_separation;
+  independent_view_separation_ =
+      selection.independent_view_separation < 0.0 ? spacing : selection.independent_view_separation;
+  if (selection.min_information_gain > 0.0) {
+    gain_planner_ = std::make_shared<const NextBestViewPlanner>(model_);
+  }
+
+  const SegmentationParameters& segmentation = parameters_.segmentation;
+  if (!model_->bounds.isEmpty()) extent_ = ObjectExtent::of(model_->bounds);
+  if (segmentation.mode == SegmentationMode::kTabletop && extent_.diagonal() <= 0.0) {
+    throw Error("tabletop segmentation needs the model's extent, and this bundle has none");
+  }
+  // Visible parts' centroids lie within the largest offset of the origin: two views of a static
+  // object cannot see centroids further apart than twice that (plus noise and clutter).
+  const double offset = largestCentroidOffset(*model_);
+  max_object_shift_ =
+      parameters_.max_object_shift > 0.0 ? parameters_.max_object_shift : 2.0 * offset + 0.02;
+  if (segmentation.mode == SegmentationMode::kNone) {
+    sighting_.radius = 0.0;  // the whole cloud is the object
+    sighting_.min_points = parameters_.min_features;
+  } else {
+    sighting_.radius = offset + boundingRadius(model_->bounds) + segmentation.cluster_tolerance;
+    sighting_.min_points = segmentation.min_cluster_points;
+  }
+  sighting_.see_through_distance = std::max(0.25 * extent_.sizes.minCoeff(), 0.01);
+  sighting_.table_distance = segmentation.plane_distance;
 }
 
 ViewUpdate OrientationEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
-                                        const Eigen::Isometry3d& world_from_camera) {
+                                        const Eigen::Isometry3d& world_from_camera,
+                                        std::optional<double> time) {
   if (!world_from_camera.matrix().allFinite()) {
     throw Error("the camera pose given to the orientation estimator is not finite");
   }
   ViewUpdate result;
   const Clock::time_point start = Clock::now();
-
-  SegmentationParameters segmentation = parameters_.segmentation;
-  segmentation.roi_centre = world_from_camera.inverse() * segmentation.roi_centre;
-  const pcl::PointCloud<pcl::PointXYZ> object = segmentObject(cloud, segmentation);
-  const Clock::time_point segmented = Clock::now();
-  result.timing.segmentation = millisecondsBetween(start, segmented);
-  result.object_points = static_cast<int>(object.size());
-  auto skip = [&](std::string reason) {
-    result.skip_reason = std::move(reason);
+  auto finish = [&]() {
     result.timing.total = millisecondsBetween(start, Clock::now());
     return result;
   };
-  if (object.size() < static_cast<std::size_t>(parameters_.min_features)) {
-    return skip("the cloud has " + std::to_string(object.size()) +
+  bool search_whole_view = false;
+  const bool selected = selectFrame(cloud, world_from_camera, time, &result, &search_whole_view);
+  const Clock::time_point selection_done = Clock::now();
+  result.timing.selection = millisecondsBetween(start, selection_done);
+  if (!selected) return finish();
+  auto skip = [&](std::string reason) {
+    result.outcome = FrameOutcome::kSkipped;
+    result.skip_reason = std::move(reason);
+    return finish();
+  };
+
+  const Eigen::Isometry3d camera_from_world = world_from_camera.inverse();
+  SegmentationParameters segmentation = parameters_.segmentation;
+  segmentation.roi_centre = camera_from_world * segmentation.roi_centre;
+  SegmentationContext context;
+  if (segmentation.mode == SegmentationMode::kTabletop) context.extent = extent_;
+  if (track_ && !search_whole_view)
+    context.expected_centroid = camera_from_world * track_->centroid;
+  const ObjectSegment object = segmentObject(cloud, segmentation, context);
+  const Clock::time_point segmented = Clock::now();
+  result.timing.segmentation = millisecondsBetween(selection_done, segmented);
+  result.object_points = static_cast<int>(object.points.size());
+  if (!object.failure.empty()) {
+    return skip(search_whole_view && track_
+                    ? "the object left its tracked position and " + object.failure
+                    : object.failure);
+  }
+  if (object.points.size() < static_cast<std::size_t>(parameters_.min_features)) {
+    return skip("the cloud has " + std::to_string(object.points.size()) +
                 " object points after segmentation, too few for features");
   }
+  // The classifier tells the direction from the object to the camera; the camera sees the
+  // object along the ray to its centroid, which is the optical axis only for a centred object.
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  for (const pcl::PointXYZ& p : object.points.points) {
+    centroid += p.getVector3fMap().cast<double>();
+  }
+  centroid /= static_cast<double>(object.points.size());
+  result.observed_centroid_world = world_from_camera * centroid;
+  if (track_ && result.reset_reason.empty()) {
+    const double shift = (result.observed_centroid_world - track_->centroid).norm();
+    if (shift > max_object_shift_) resetForMovedObject(shift, &result);
+  }
+  if (!track_) track_ = ObjectTrack{};
+  track_->centroid = result.observed_centroid_world;
+  if (object.table) track_->table = planeInWorld(*object.table, world_from_camera);
 
-  const FeatureSet features =
-      computeFeatures(object, featureParametersOf(model_->parameters), Eigen::Vector3f::Zero());
+  const FeatureSet features = computeFeatures(
+      object.points, featureParametersOf(model_->parameters), Eigen::Vector3f::Zero());
   const Clock::time_point described = Clock::now();
   result.timing.features = millisecondsBetween(segmented, described);
   result.features = static_cast<int>(features.size());
@@ -129,13 +229,17 @@ ViewUpdate OrientationEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cl
   const Clock::time_point classified = Clock::now();
   result.timing.classification = millisecondsBetween(described, classified);
 
-  // The classifier tells the direction from the object to the camera; the camera sees the
-  // object along the ray to its centroid, which is the optical axis only for a centred object.
-  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
-  for (const pcl::PointXYZ& p : object.points) centroid += p.getVector3fMap().cast<double>();
-  centroid /= static_cast<double>(object.size());
-  const BinghamMixture camera_frame =
-      viewMeasurement(result.p_sum, model_->view_directions, kappa_, 0.0, parameters_.min_weight);
+  // Tempered likelihood (doc/method.md section 12): (sum_m p_m B_m)^a ~ sum_m p_m^a B_m^a when
+  // the girdles hardly overlap, and B^a is the girdle of concentration a kappa (the normaliser
+  // ratio is the same for every m and cancels).
+  const double exponent = result.likelihood_exponent;
+  Eigen::VectorXd weights = result.p_sum;
+  if (exponent < 1.0) {
+    weights = result.p_sum.array().pow(exponent).matrix();
+    weights /= weights.sum();
+  }
+  const BinghamMixture camera_frame = viewMeasurement(
+      weights, model_->view_directions, exponent * kappa_, 0.0, parameters_.min_weight);
   const Eigen::Vector4d line_of_sight =
       rotationBetween(Eigen::Vector3d(0, 0, -1), -centroid.normalized());
   const Eigen::Vector4d q_WC = fromEigenQuaternion(Eigen::Quaterniond(world_from_camera.linear()));
@@ -143,10 +247,15 @@ ViewUpdate OrientationEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cl
   const Clock::time_point measured = Clock::now();
   result.timing.measurement = millisecondsBetween(classified, measured);
 
+  // The view's direction is measured before the fusion moves the position estimate.
+  const Eigen::Vector3d view_direction = world_from_camera.translation() - viewingReference();
   filter_.update(measurement);
   map_cache_.reset();
+  spread_cache_.reset();
+  hypotheses_cache_.reset();
+  if (view_direction.norm() > 1e-9) fused_views_.add(view_direction);
+  result.outcome = FrameOutcome::kFused;
   result.updated = true;
-  result.observed_centroid_world = world_from_camera * centroid;
   last_centroid_world_ = result.observed_centroid_world;
   last_camera_position_world_ = world_from_camera.translation();
   const Clock::time_point fused = Clock::now();
@@ -155,9 +264,96 @@ ViewUpdate OrientationEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cl
   return result;
 }
 
+bool OrientationEstimator::selectFrame(const pcl::PointCloud<pcl::PointXYZ>& cloud,
+                                       const Eigen::Isometry3d& world_from_camera,
+                                       std::optional<double> time, ViewUpdate* result,
+                                       bool* search_whole_view) {
+  if (time) {
+    const StampedPose current{world_from_camera, *time};
+    std::optional<std::string> jump;
+    if (last_pose_) jump = cameraJumpReason(*last_pose_, current, parameters_.selection);
+    last_pose_ = current;
+    if (jump) {
+      result->skip_reason = *jump;
+      return false;
+    }
+  }
+  if (!track_) return true;  // nothing seen yet: every frame is looked at in full
+
+  const ObjectSighting sighting =
+      lookForTrackedObject(cloud, world_from_camera, *track_, sighting_);
+  if (sighting.status == SightingStatus::kNotInView) {
+    result->skip_reason = "the object is not in view where it was tracked (" +
+                          std::to_string(sighting.points) +
+                          " points there: out of the image, occluded or too far)";
+    return false;
+  }
+  if (sighting.status == SightingStatus::kLeft) {
+    *search_whole_view = true;  // the place is empty: look for the object in the whole view
+    return true;
+  }
+  const double shift = (sighting.centroid - track_->centroid).norm();
+  if (shift > max_object_shift_) {
+    resetForMovedObject(shift, result);
+    *search_whole_view = true;
+    return true;
+  }
+  track_->centroid = sighting.centroid;
+  if (fused_views_.size() == 0) return true;
+
+  const Eigen::Vector3d camera = world_from_camera.translation();
+  const Eigen::Vector3d direction = camera - viewingReference();
+  if (direction.norm() < 1e-6) {
+    result->skip_reason = "the camera is at the object's position";
+    return false;
+  }
+  result->view_separation = fused_views_.separationFrom(direction);
+  result->likelihood_exponent =
+      likelihoodExponent(result->view_separation, independent_view_separation_);
+  if (isNewView(camera, result->view_separation)) return true;
+  result->outcome = FrameOutcome::kNotNovel;
+  return false;
+}
+
+bool OrientationEstimator::isNewView(const Eigen::Vector3d& camera_position,
+                                     double separation) const {
+  const double exponent = likelihoodExponent(separation, independent_view_separation_);
+  if (exponent < kMinLikelihoodExponent) return false;
+  if (separation >= min_view_separation_) return true;
+  if (!gain_planner_) return false;
+  if (!hypotheses_cache_) {
+    hypotheses_cache_ = beliefHypotheses(belief(), kGainSamplesPerComponent);
+  }
+  const double gain =
+      gain_planner_->informationGain(camera_position, viewingReference(), *hypotheses_cache_);
+  return exponent * gain >= parameters_.selection.min_information_gain;
+}
+
+void OrientationEstimator::resetForMovedObject(double shift, ViewUpdate* result) {
+  char text[200];
+  std::snprintf(text, sizeof(text),
+                "the object moved: it is seen %.3f m from where it was tracked (more than "
+                "max_object_shift %.3f m)",
+                shift, max_object_shift_);
+  reset();
+  result->reset_reason = text;
+  result->view_separation = M_PI;
+  result->likelihood_exponent = 1.0;
+}
+
+Eigen::Vector3d OrientationEstimator::viewingReference() const {
+  if (const std::optional<Eigen::Vector3d> position = positionEstimate()) return *position;
+  return track_ ? track_->centroid : Eigen::Vector3d::Zero();
+}
+
 void OrientationEstimator::reset() {
+  // The camera's last pose stays: the tf-jump check is about the camera, not the object.
   filter_.reset();
   map_cache_.reset();
+  spread_cache_.reset();
+  hypotheses_cache_.reset();
+  fused_views_.clear();
+  track_.reset();
   last_centroid_world_.reset();
   last_camera_position_world_.reset();
 }
@@ -188,25 +384,9 @@ std::optional<Eigen::Vector3d> OrientationEstimator::positionEstimate() const {
   return Eigen::Vector3d(*last_centroid_world_ - R_WO * offset);
 }
 
-Eigen::Matrix3d OrientationEstimator::orientationCovariance() const {
-  // Spread of the belief around its MAP, as world-frame rotation vectors of q_s (x) q_MAP^-1,
-  // from a fixed-seed sample so repeated calls agree.
-  constexpr int kSamples = 300;
-  const Eigen::Vector4d map = mapOrientation();
-  std::mt19937_64 generator(7);
-  const std::vector<Eigen::Vector4d> samples = belief().sample(kSamples, generator);
-  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-  for (const Eigen::Vector4d& q : samples) {
-    Eigen::Vector4d delta = quaternionMultiply(q, quaternionConjugate(map));
-    if (delta(0) < 0) delta = -delta;
-    const double half_angle = std::atan2(delta.tail<3>().norm(), delta(0));
-    const double sine = delta.tail<3>().norm();
-    const Eigen::Vector3d rotation_vector =
-        sine > 1e-12 ? Eigen::Vector3d(delta.tail<3>() / sine * 2.0 * half_angle)
-                     : Eigen::Vector3d(2.0 * delta.tail<3>());
-    covariance += rotation_vector * rotation_vector.transpose();
-  }
-  return covariance / static_cast<double>(kSamples);
+const BeliefSpread& OrientationEstimator::spread() const {
+  if (!spread_cache_) spread_cache_ = beliefSpread(belief(), mapOrientation());
+  return *spread_cache_;
 }
 
 }  // namespace vdc

@@ -36,9 +36,12 @@ pcl::PointCloud<pcl::PointXYZ> tableScene() {
 
 TEST(ObjectSegmentationTest, NoneKeepsEveryFinitePoint) {
   const pcl::PointCloud<pcl::PointXYZ> scene = tableScene();
-  const pcl::PointCloud<pcl::PointXYZ> object = segmentObject(scene, {});
-  EXPECT_EQ(object.size(), scene.size() - 100);
-  EXPECT_TRUE(object.is_dense);
+  const ObjectSegment object = segmentObject(scene, {});
+  EXPECT_EQ(object.points.size(), scene.size() - 100);
+  EXPECT_TRUE(object.points.is_dense);
+  ASSERT_EQ(object.indices.size(), object.points.size());
+  EXPECT_EQ(object.indices.back(), static_cast<int>(scene.size()) - 101);  // the NaNs come last
+  EXPECT_TRUE(object.failure.empty());
 }
 
 TEST(ObjectSegmentationTest, RegionOfInterestRemovesTheTableAndKeepsTheObject) {
@@ -46,10 +49,12 @@ TEST(ObjectSegmentationTest, RegionOfInterestRemovesTheTableAndKeepsTheObject) {
   parameters.mode = SegmentationMode::kRegionOfInterest;
   parameters.roi_centre = Eigen::Vector3d(0.1, 0.0, 0.03);
   parameters.roi_radius = 0.12;
-  const pcl::PointCloud<pcl::PointXYZ> object = segmentObject(tableScene(), parameters);
-  ASSERT_GT(object.size(), 2500u);
-  EXPECT_LE(object.size(), 3000u);
-  for (const pcl::PointXYZ& p : object.points) {
+  const ObjectSegment object = segmentObject(tableScene(), parameters);
+  ASSERT_GT(object.points.size(), 2500u);
+  EXPECT_LE(object.points.size(), 3000u);
+  ASSERT_TRUE(object.table.has_value());
+  EXPECT_NEAR(std::abs((*object.table)(2)), 1.0, 1e-3);  // the table z = 0
+  for (const pcl::PointXYZ& p : object.points.points) {
     EXPECT_GT(p.z, 0.004f);          // no table point
     EXPECT_NEAR(p.x, 0.1f, 0.031f);  // only the cube
   }
@@ -59,8 +64,8 @@ TEST(ObjectSegmentationTest, NothingInTheRegionGivesAnEmptyCloud) {
   SegmentationParameters parameters;
   parameters.mode = SegmentationMode::kRegionOfInterest;
   parameters.roi_centre = Eigen::Vector3d(5, 5, 5);
-  EXPECT_TRUE(segmentObject(tableScene(), parameters).empty());
-  EXPECT_TRUE(segmentObject(pcl::PointCloud<pcl::PointXYZ>(), parameters).empty());
+  EXPECT_TRUE(segmentObject(tableScene(), parameters).points.empty());
+  EXPECT_TRUE(segmentObject(pcl::PointCloud<pcl::PointXYZ>(), parameters).points.empty());
 }
 
 TEST(ObjectSegmentationTest, RefusesInvalidParameters) {
@@ -73,6 +78,37 @@ TEST(ObjectSegmentationTest, RefusesInvalidParameters) {
   parameters = {};
   parameters.roi_centre.x() = std::numeric_limits<double>::infinity();
   EXPECT_THROW(checkSegmentationParameters(parameters), Error);
+  parameters = {};
+  parameters.extent_tolerance = 1.0;
+  EXPECT_THROW(checkSegmentationParameters(parameters), Error);
+  parameters = {};
+  parameters.border_margin = -1;
+  EXPECT_THROW(checkSegmentationParameters(parameters), Error);
+  parameters = {};
+  parameters.mode = SegmentationMode::kTabletop;  // without the model's extent
+  EXPECT_THROW(segmentObject(tableScene(), parameters), Error);
+}
+
+TEST(ObjectSegmentationTest, AnObjectTouchingTheBorderOfAnOrganisedCloudIsCutOff) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  pcl::PointCloud<pcl::PointXYZ> image(40, 30, pcl::PointXYZ(nan, nan, nan));
+  for (int row = 10; row < 20; ++row) {
+    for (int column = 10; column < 20; ++column) image.at(column, row) = pcl::PointXYZ(0, 0, 1);
+  }
+  EXPECT_TRUE(segmentObject(image, {}).failure.empty());
+  image.at(1, 15) = pcl::PointXYZ(0, 0, 1);  // within the 2-pixel margin of the left edge
+  EXPECT_NE(segmentObject(image, {}).failure.find("image border"), std::string::npos);
+  SegmentationParameters no_margin;
+  no_margin.border_margin = 0;
+  EXPECT_TRUE(segmentObject(image, no_margin).failure.empty());
+}
+
+TEST(ObjectSegmentationTest, ModeNamesRoundTripAndUnknownOnesAreRefused) {
+  for (const SegmentationMode mode : {SegmentationMode::kNone, SegmentationMode::kRegionOfInterest,
+                                      SegmentationMode::kTabletop}) {
+    EXPECT_EQ(parseSegmentationMode(segmentationModeName(mode)), mode);
+  }
+  EXPECT_THROW(parseSegmentationMode("table"), Error);
 }
 
 }  // namespace

@@ -8,11 +8,16 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "view_direction_classification/bingham/bingham_mixture.h"
-#include "view_direction_classification/training/model_bundle.h"
+#include "view_direction_classification/estimation/belief_spread.h"
+#include "view_direction_classification/estimation/frame_selection.h"
 #include "view_direction_classification/estimation/object_segmentation.h"
+#include "view_direction_classification/estimation/object_tracking.h"
 #include "view_direction_classification/estimation/orientation_filter.h"
+#include "view_direction_classification/planning/next_best_view.h"
+#include "view_direction_classification/training/model_bundle.h"
 
 namespace vdc {
 
@@ -34,14 +39,24 @@ struct EstimatorParameters {
   // Segmentation of each cloud. Its roi_centre is a point of the fixed frame (where an object
   // stands still while the camera moves); update() moves it into each cloud's frame.
   SegmentationParameters segmentation;
+  // Which frames of a stream are featurised and how much nearby views count.
+  FrameSelectionParameters selection;
+  // [m] The object's observed centroid jumping further than this from where it was tracked means
+  // the object was moved: the belief is reset. Smaller moves are followed. 0: twice the largest
+  // centroid offset of the model's views plus 2 cm (their centroids differ by up to that much).
+  double max_object_shift = 0.0;
 };
 
 // Wall-clock time of each stage of one update [ms].
 struct UpdateTiming {
-  double segmentation = 0, features = 0, classification = 0, measurement = 0, fusion = 0, total = 0;
+  // selection: the tf-jump check, following the object and the novelty test (all a frame costs
+  // that is not a new view).
+  double selection = 0, segmentation = 0, features = 0, classification = 0, measurement = 0,
+         fusion = 0, total = 0;
 
   // Stage-wise sums and means over many updates (benchmarks, the evaluation).
   UpdateTiming& operator+=(const UpdateTiming& other) {
+    selection += other.selection;
     segmentation += other.segmentation;
     features += other.features;
     classification += other.classification;
@@ -51,6 +66,7 @@ struct UpdateTiming {
     return *this;
   }
   UpdateTiming& operator/=(double count) {
+    selection /= count;
     segmentation /= count;
     features /= count;
     classification /= count;
@@ -61,12 +77,27 @@ struct UpdateTiming {
   }
 };
 
-// What one view did.
+// What became of one frame.
+enum class FrameOutcome {
+  kFused,     // a new view: featurised and fused
+  kNotNovel,  // a view already in the belief: not featurised, the belief is unchanged
+  kSkipped,   // bad or unusable input (skip_reason says why), the belief is unchanged
+};
+
+// What one frame did.
 struct ViewUpdate {
-  bool updated = false;     // false: skipped, the belief is unchanged
-  std::string skip_reason;  // why it was skipped (one sentence), empty when updated
-  int object_points = 0;    // points left after segmentation
+  FrameOutcome outcome = FrameOutcome::kSkipped;
+  bool updated = false;     // outcome == kFused
+  std::string skip_reason;  // why it was skipped (one sentence), empty otherwise
+  // Non-empty when the estimator reset itself before this frame (the object was moved); the
+  // frame was then treated as the first view.
+  std::string reset_reason;
+  int object_points = 0;  // points left after segmentation (0 when not segmented)
   int features = 0;
+  // [rad] From the nearest fused view (pi for the first view; not computed for skipped frames
+  // before the object was found) and the likelihood exponent that separation gave.
+  double view_separation = M_PI;
+  double likelihood_exponent = 1.0;
   Eigen::VectorXd p_sum;  // M, the view's summed distribution (when updated)
   Eigen::Vector3d observed_centroid_world = Eigen::Vector3d::Zero();
   UpdateTiming timing;
@@ -80,40 +111,74 @@ class OrientationEstimator {
   OrientationEstimator(std::shared_ptr<const ModelBundle> model, EstimatorParameters parameters);
 
   // cloud: in the camera frame (any frame whose pose is world_from_camera; need not be optical,
-  // need not be organised; NaN points allowed). Segments (the region of interest moved from the
-  // fixed frame into the cloud's frame with world_from_camera), computes features, classifies, sums
-  // the n_feat most certain, builds the measurement along the actual line of sight to the
-  // object, moves it into the fixed frame and fuses it. Never throws for cloud content: empty,
-  // NaN or too small clouds are skipped with a reason. Throws vdc::Error for a non-finite pose.
+  // need not be organised; NaN points allowed); time [s]: the frame's stamp, for the tf-jump
+  // check (none: not checked). First selects (doc/method.md section 12): a camera pose that
+  // jumped is skipped; the object is looked for where it was tracked (moved: the belief is reset;
+  // not in view: skipped); a frame whose viewing direction is within min_view_separation of a
+  // fused view is not novel and ends here. A new view is segmented (the region of interest
+  // moved from the fixed frame into the cloud's frame with world_from_camera), featurised,
+  // classified, the n_feat most certain features summed, its measurement built along the actual
+  // line of sight to the object, tempered by its separation from the fused views, moved into the
+  // fixed frame and fused. Never throws for cloud content: empty, NaN or too small clouds are
+  // skipped with a reason. Throws vdc::Error for a non-finite pose.
   ViewUpdate update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
-                    const Eigen::Isometry3d& world_from_camera);
-  // Back to the uniform prior (forgets the position too).
+                    const Eigen::Isometry3d& world_from_camera,
+                    std::optional<double> time = std::nullopt);
+  // Back to the uniform prior (forgets the fused views, the position and the track too).
   void reset();
 
   const BinghamMixture& belief() const { return filter_.belief(); }
   int updateCount() const { return filter_.updateCount(); }
+  // Distinct views in the belief: the frames fused since the last reset.
+  int viewsFused() const { return fused_views_.size(); }
+  const FusedViews& fusedViews() const { return fused_views_; }
   Eigen::Vector4d mapOrientation() const;  // q_WO (w, x, y, z), w >= 0
   double entropy() const;
   // Object origin in the fixed frame: the last observed centroid minus R_WO times the stored
   // centroid offset of the training direction the camera sees it from under the MAP
   // orientation. Empty before the first update.
   std::optional<Eigen::Vector3d> positionEstimate() const;
-  // 3 x 3 covariance of the orientation's rotation vector [rad^2] (world frame), from the
-  // belief's spread around its MAP: for the ROS pose's covariance.
-  Eigen::Matrix3d orientationCovariance() const;
+  // How far the belief spreads around its MAP (the 90 % cone and the covariance of the ROS
+  // pose, from the same 1000 fixed-seed samples); computed once per belief.
+  const BeliefSpread& spread() const;
+  // 3 x 3 covariance of the orientation's rotation vector [rad^2] (world frame): spread().
+  Eigen::Matrix3d orientationCovariance() const { return spread().covariance; }
 
   const ModelBundle& model() const { return *model_; }
   const EstimatorParameters& parameters() const { return parameters_; }
   double kappa() const { return kappa_; }
 
  private:
+  // The selection stage of update(); false when the frame ends there (result says why).
+  bool selectFrame(const pcl::PointCloud<pcl::PointXYZ>& cloud,
+                   const Eigen::Isometry3d& world_from_camera, std::optional<double> time,
+                   ViewUpdate* result, bool* search_whole_view);
+  // Whether a frame `separation` from the fused views is a new view.
+  bool isNewView(const Eigen::Vector3d& camera_position, double separation) const;
+  // Resets and says why in result->reset_reason.
+  void resetForMovedObject(double shift, ViewUpdate* result);
+  // Fixed-frame point the viewing directions are measured from: the position estimate, or the
+  // tracked centroid before the first view.
+  Eigen::Vector3d viewingReference() const;
+
   std::shared_ptr<const ModelBundle> model_;
   EstimatorParameters parameters_;
   double kappa_;
+  ObjectExtent extent_;
+  double min_view_separation_, independent_view_separation_, max_object_shift_;
+  SightingParameters sighting_;
   OrientationFilter filter_;
+  FusedViews fused_views_;
+  std::optional<ObjectTrack> track_;
+  std::optional<StampedPose> last_pose_;
   std::optional<Eigen::Vector3d> last_centroid_world_, last_camera_position_world_;
-  // The MAP costs a search over every component: computed once per belief, on first request.
+  // Only when selection.min_information_gain > 0.
+  std::shared_ptr<const NextBestViewPlanner> gain_planner_;
+  // The MAP costs a search over every component: computed once per belief, on first request;
+  // the spread and the information-gain hypotheses likewise.
   mutable std::optional<Eigen::Vector4d> map_cache_;
+  mutable std::optional<BeliefSpread> spread_cache_;
+  mutable std::optional<std::vector<OrientationHypothesis>> hypotheses_cache_;
 };
 
 }  // namespace vdc
