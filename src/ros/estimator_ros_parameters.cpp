@@ -23,7 +23,8 @@ ParameterTable<EstimatorRosParameters> makeTable() {
       .add("max_points", &P::max_points, integerAtLeast(1))
       .add("position_variance", &P::position_variance, numberAbove(0.0))
       .add("marker_samples", &P::marker_samples, integerBetween(0, 1000))
-      .add("marker_length", &P::marker_length, numberAbove(0.0));
+      .add("marker_length", &P::marker_length, numberAbove(0.0))
+      .add("converged_cone90_deg", &P::converged_cone90_deg, numberAbove(0.0));
   // The core's settings.
   using E = EstimatorParameters;
   const auto core = [](auto member) { return fieldPath(&P::core, member); };
@@ -32,7 +33,21 @@ ParameterTable<EstimatorRosParameters> makeTable() {
       .add("max_components", core(&E::max_components), integerAtLeast(1))
       .add("min_features", core(&E::min_features), integerAtLeast(1))
       .add("min_weight", core(&E::min_weight), numberIn(0.0, 1.0, false))
-      .add("belief_weight_floor", core(&E::belief_weight_floor), numberIn(0.0, 1.0, false));
+      .add("belief_weight_floor", core(&E::belief_weight_floor), numberIn(0.0, 1.0, false))
+      .add("max_object_shift", core(&E::max_object_shift), numberAtLeast(0.0, "0: from the model"));
+  // Frame selection on streams.
+  using F = FrameSelectionParameters;
+  const auto selection = [](auto member) { return fieldPath(&P::core, &E::selection, member); };
+  table
+      .add("min_view_separation", selection(&F::min_view_separation),
+           finiteNumber("negative: half the model's view spacing"))
+      .add("min_information_gain", selection(&F::min_information_gain),
+           numberAtLeast(0.0, "0: off"))
+      .add("independent_view_separation", selection(&F::independent_view_separation),
+           finiteNumber("negative: the model's view spacing, 0: no tempering"))
+      .add("max_camera_speed", selection(&F::max_camera_speed), numberAtLeast(0.0, "0: no check"))
+      .add("max_camera_turn_rate", selection(&F::max_camera_turn_rate),
+           numberAtLeast(0.0, "0: no check"));
   // Segmentation (its region of interest is in the fixed frame).
   using S = SegmentationParameters;
   const auto segmentation = [](auto member) {
@@ -42,13 +57,16 @@ ParameterTable<EstimatorRosParameters> makeTable() {
       .addChoice("segmentation", segmentation(&S::mode),
                  std::vector<std::pair<std::string, SegmentationMode>>{
                      {"none", SegmentationMode::kNone},
-                     {"region_of_interest", SegmentationMode::kRegionOfInterest}})
+                     {"region_of_interest", SegmentationMode::kRegionOfInterest},
+                     {"tabletop", SegmentationMode::kTabletop}})
       .addPoint("roi_centre", segmentation(&S::roi_centre), "in the fixed frame")
       .add("roi_radius", segmentation(&S::roi_radius), numberAbove(0.0))
       .add("plane_distance", segmentation(&S::plane_distance), numberAbove(0.0))
       .add("min_plane_fraction", segmentation(&S::min_plane_fraction), numberIn(0.0, 1.0, true))
       .add("cluster_tolerance", segmentation(&S::cluster_tolerance), numberAbove(0.0))
-      .add("min_cluster_points", segmentation(&S::min_cluster_points), integerAtLeast(1));
+      .add("min_cluster_points", segmentation(&S::min_cluster_points), integerAtLeast(1))
+      .add("extent_tolerance", segmentation(&S::extent_tolerance), numberIn(0.0, 1.0, false))
+      .add("border_margin", segmentation(&S::border_margin), integerAtLeast(0));
   return table;
 }
 

@@ -25,6 +25,8 @@ struct EstimatorRosParameters {
   double position_variance = 0.0025;  // [m^2] per axis in ~pose's covariance
   int marker_samples = 20;            // axes triads sampled from the belief for ~markers
   double marker_length = 0.1;         // [m] MAP axes arrows; samples are drawn at 0.8 of it
+  // [deg] ~estimate's `converged` when its cone90_deg is at most this.
+  double converged_cone90_deg = 15.0;
   // Core settings; segmentation.roi_centre holds the region of interest in the FIXED frame (the
   // node moves it into each cloud's frame).
   EstimatorParameters core;

@@ -159,9 +159,19 @@ void OrientationEstimatorRos::processCloud(const sensor_msgs::PointCloud2& cloud
   const double conversion_ms = millisecondsSince(start);
 
   std::lock_guard<std::mutex> lock(estimator_mutex_);
-  const ViewUpdate update = estimator_->update(xyz, world_from_camera);
-  if (!update.updated) {
+  const ViewUpdate update = estimator_->update(xyz, world_from_camera, cloud.header.stamp.toSec());
+  if (!update.reset_reason.empty()) announceReset(update.reset_reason);
+  if (update.outcome == FrameOutcome::kSkipped) {
     skip("cloud in frame '" + frame + "' not fused: " + update.skip_reason);
+    return;
+  }
+  if (update.outcome == FrameOutcome::kNotNovel) {
+    std::lock_guard<std::mutex> statistics_lock(statistics_mutex_);
+    ++not_novel_;
+    last_skip_reason_.clear();
+    last_tf_ms_ = tf_ms;
+    last_conversion_ms_ = conversion_ms;
+    last_selection_ms_ = update.timing.selection;
     return;
   }
   start = Clock::now();
@@ -170,9 +180,11 @@ void OrientationEstimatorRos::processCloud(const sensor_msgs::PointCloud2& cloud
 
   std::lock_guard<std::mutex> statistics_lock(statistics_mutex_);
   ++processed_;
+  views_fused_ = estimator_->viewsFused();
   last_skip_reason_.clear();
   last_tf_ms_ = tf_ms;
   last_conversion_ms_ = conversion_ms;
+  last_selection_ms_ = update.timing.selection;
   last_timing_ = update.timing;
   last_publish_ms_ = publish_ms;
 }
@@ -189,6 +201,10 @@ void OrientationEstimatorRos::publishEstimate(const std_msgs::Header& cloud_head
   estimate.object_id = parameters_.object_id;
   estimate.map_orientation = toQuaternionMsg(map);
   estimate.entropy = estimator_->entropy();
+  // The cone and ~pose's covariance come from the same belief samples (BeliefSpread).
+  estimate.views_fused = static_cast<std::uint32_t>(estimator_->viewsFused());
+  estimate.cone90_deg = estimator_->spread().cone90 * 180.0 / M_PI;
+  estimate.converged = estimate.cone90_deg <= parameters_.converged_cone90_deg;
   estimate_publisher_.publish(estimate);
 
   const std::optional<Eigen::Vector3d> position = estimator_->positionEstimate();
@@ -256,6 +272,15 @@ bool OrientationEstimatorRos::resetService(std_srvs::Trigger::Request&,
 // Called with estimator_mutex_ held.
 void OrientationEstimatorRos::resetBelief(const std::string& why) {
   estimator_->reset();
+  announceReset(why);
+}
+
+// Called with estimator_mutex_ held, after the core's belief went back to uniform.
+void OrientationEstimatorRos::announceReset(const std::string& why) {
+  {
+    std::lock_guard<std::mutex> lock(statistics_mutex_);
+    views_fused_ = estimator_->viewsFused();
+  }
   {
     // No object pose until the next estimate: listeners see the frame go stale, not a pose the
     // uniform belief no longer supports.
@@ -277,15 +302,18 @@ void OrientationEstimatorRos::diagnose(diagnostic_updater::DiagnosticStatusWrapp
   } else if (processed_ == 0) {
     status.summary(diagnostic_msgs::DiagnosticStatus::OK, "Waiting for clouds.");
   } else {
-    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "Fusing clouds.");
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "Fusing new views.");
   }
   status.add("clouds received", received_);
-  status.add("clouds fused", processed_);
+  status.add("clouds fused (new views)", processed_);
+  status.add("clouds not novel (a view already fused)", not_novel_);
   status.add("clouds dropped (a newer one arrived first)", dropped_);
   status.add("clouds skipped (bad input or no tf)", skipped_);
+  status.add("views fused in the belief", views_fused_);
   status.add("last skip reason", last_skip_reason_.empty() ? "none" : last_skip_reason_);
   status.add("last tf lookup [ms]", last_tf_ms_);
   status.add("last conversion [ms]", last_conversion_ms_);
+  status.add("last frame selection [ms]", last_selection_ms_);
   status.add("last segmentation [ms]", last_timing_.segmentation);
   status.add("last features [ms]", last_timing_.features);
   status.add("last classification [ms]", last_timing_.classification);

@@ -28,6 +28,8 @@ namespace vdc {
 // ~tf_rate); serves ~reset and reports diagnostics. The same class runs in the node binary and in
 // the nodelet.
 //
+// The stream's frames are selected by the core: only a new view of the object is featurised and
+// fused; the others cost a tf lookup and one pass over the cloud (counted as not novel).
 // A camera can be faster than the estimator: the subscriber callback only keeps the newest
 // cloud, and one worker thread processes whatever is newest when it is free (the clouds it never
 // saw are counted as skipped). Bad clouds are logged (throttled) and skipped; nothing a message
@@ -51,6 +53,7 @@ class OrientationEstimatorRos {
   void skip(const std::string& reason);
   bool resetService(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
   void resetBelief(const std::string& why);
+  void announceReset(const std::string& why);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
 
   ros::NodeHandle node_, private_node_;
@@ -86,9 +89,10 @@ class OrientationEstimatorRos {
 
   // Statistics for the diagnostics, guarded by statistics_mutex_.
   std::mutex statistics_mutex_;
-  std::uint64_t received_ = 0, processed_ = 0, dropped_ = 0, skipped_ = 0;
+  std::uint64_t received_ = 0, processed_ = 0, not_novel_ = 0, dropped_ = 0, skipped_ = 0;
+  int views_fused_ = 0;
   std::string last_skip_reason_;
-  double last_tf_ms_ = 0, last_conversion_ms_ = 0, last_publish_ms_ = 0;
+  double last_tf_ms_ = 0, last_conversion_ms_ = 0, last_selection_ms_ = 0, last_publish_ms_ = 0;
   UpdateTiming last_timing_;
 };
 
