@@ -74,7 +74,13 @@ TriangleMesh distractorMesh(const std::string& description) {
   if (description.empty()) {
     throw Error("a distractor needs a description: box SX SY SZ, cylinder R H or a mesh file");
   }
-  return loadMesh(description);
+  try {
+    return loadMesh(description);
+  } catch (const Error& error) {
+    throw Error("distractor '" + description +
+                "' is neither 'box SX SY SZ', 'cylinder R H' nor a readable mesh file: " +
+                error.what());
+  }
 }
 
 }  // namespace vdc

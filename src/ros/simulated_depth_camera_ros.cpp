@@ -13,6 +13,7 @@
 #include "view_direction_classification/geometry/camera.h"
 #include "view_direction_classification/geometry/mesh_io.h"
 #include "view_direction_classification/geometry/mug_mesh.h"
+#include "view_direction_classification/geometry/scene.h"
 #include "view_direction_classification/geometry/visibility_crop.h"
 
 namespace vdc {
@@ -49,8 +50,18 @@ SimulatedDepthCameraRos::SimulatedDepthCameraRos(ros::NodeHandle node, ros::Node
   camera_frame_ = p.camera_frame;
   object_frame_ = p.object_frame;
   publish_object_tf_ = p.publish_object_tf;
-  renderer_ = std::make_unique<DepthRenderer>(p.mesh == "mug" ? makeMug() : loadMesh(p.mesh));
   world_from_object_ = poseFromXyzRpy(p.object_pose);
+  Scene scene;
+  scene.object = {p.mesh == "mug" ? makeMug() : loadMesh(p.mesh), world_from_object_};
+  if (p.table_size[0] > 0.0) scene.table_size = Eigen::Vector2d(p.table_size[0], p.table_size[1]);
+  const std::vector<std::string> distractors = distractorDescriptions(p.distractors);
+  for (std::size_t i = 0; i < distractors.size(); ++i) {
+    const std::vector<double> pose(p.distractor_poses.begin() + 6 * i,
+                                   p.distractor_poses.begin() + 6 * (i + 1));
+    scene.distractors.push_back({distractorMesh(distractors[i]), poseFromXyzRpy(pose)});
+  }
+  // The whole scene in the fixed frame: one z-buffer, so the parts hide each other.
+  renderer_ = std::make_unique<DepthRenderer>(sceneMesh(scene));
   noise_.enabled = p.noise;
   rng_.seed(static_cast<std::uint32_t>(p.seed));
   visibility_radius_ = p.visibility_radius;
@@ -67,10 +78,12 @@ SimulatedDepthCameraRos::SimulatedDepthCameraRos(ros::NodeHandle node, ros::Node
   move_service_ = private_node_.advertiseService("move_to", &SimulatedDepthCameraRos::moveTo, this);
   timer_ =
       node_.createTimer(ros::Duration(1.0 / p.rate), &SimulatedDepthCameraRos::publishView, this);
-  ROS_INFO("Simulated depth camera: mesh %s, %s -> %s at %.1f Hz, noise %s, visibility crop %s",
-           p.mesh.c_str(), fixed_frame_.c_str(), camera_frame_.c_str(), p.rate,
-           noise_.enabled ? "on" : "off",
-           visibility_radius_ > 0.0 ? (std::to_string(visibility_radius_) + " m").c_str() : "off");
+  ROS_INFO(
+      "Simulated depth camera: mesh %s%s, %zu distractors, %s -> %s at %.1f Hz, noise %s, "
+      "visibility crop %s",
+      p.mesh.c_str(), scene.table_size ? " on a table" : "", distractors.size(),
+      fixed_frame_.c_str(), camera_frame_.c_str(), p.rate, noise_.enabled ? "on" : "off",
+      visibility_radius_ > 0.0 ? (std::to_string(visibility_radius_) + " m").c_str() : "off");
 }
 
 void SimulatedDepthCameraRos::publishView(const ros::TimerEvent&) {
@@ -90,9 +103,10 @@ void SimulatedDepthCameraRos::publishView(const ros::TimerEvent&) {
   tf_broadcaster_.sendTransform(transforms);
   if (cloud_publisher_.getNumSubscribers() == 0) return;  // rendering costs; skip it unheard
 
-  const Eigen::Isometry3d camera_from_object = world_from_camera.inverse() * world_from_object_;
-  pcl::PointCloud<pcl::PointXYZ> cloud = renderer_->render(camera_from_object, noise_, &rng_);
+  const Eigen::Isometry3d camera_from_world = world_from_camera.inverse();
+  pcl::PointCloud<pcl::PointXYZ> cloud = renderer_->render(camera_from_world, noise_, &rng_);
   if (visibility_radius_ > 0.0) {
+    const Eigen::Isometry3d camera_from_object = camera_from_world * world_from_object_;
     cloud = cropToAnchors(cloud, camera_from_object, visibility_anchors_, visibility_radius_);
   }
   sensor_msgs::PointCloud2 msg;

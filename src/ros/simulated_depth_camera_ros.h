@@ -19,7 +19,8 @@
 namespace vdc {
 
 // The simulated depth camera node (doc/nodes.md): renders a mesh placed at a fixed
-// pose in fixed_frame with the training renderer and publishes the organised cloud `~cloud` in
+// pose in fixed_frame, optionally on a table among distractors (geometry/scene.h), with the
+// training renderer and publishes the organised cloud `~cloud` in
 // the camera's optical frame at `rate`, with the camera's tf (fixed_frame -> camera_frame) at the
 // same stamp, and optionally the object's ground-truth tf for evaluation. `~move_to` moves it.
 // Parameters are documented in config/simulated_depth_camera.yaml.
@@ -37,7 +38,7 @@ class SimulatedDepthCameraRos {
   std::string fixed_frame_, camera_frame_, object_frame_;
   bool publish_object_tf_ = false;
   Eigen::Isometry3d world_from_object_ = Eigen::Isometry3d::Identity();
-  std::unique_ptr<DepthRenderer> renderer_;
+  std::unique_ptr<DepthRenderer> renderer_;  // of the whole scene, in the fixed frame
   DepthNoiseModel noise_;
   std::mt19937 rng_;
   double visibility_radius_ = 0.0;  // <= 0: no crop

@@ -26,7 +26,16 @@ struct SimulatedDepthCameraRosParameters {
   int seed = 1;
   double visibility_radius = 0.0;          // [m]; 0 = no crop
   std::vector<double> visibility_anchors;  // x y z triples; empty = the mug's handle
+  // The scene around the object (geometry/scene.h): a table under it of this size [m] along the
+  // fixed frame's x and y ([0, 0]: none), and distractors: descriptions separated by ';' ("box
+  // SX SY SZ", "cylinder R H" or a mesh file) with one x y z roll pitch yaw pose each.
+  std::vector<double> table_size = {0.0, 0.0};
+  std::string distractors;
+  std::vector<double> distractor_poses;
 };
+
+// The descriptions in `distractors`, trimmed, empty ones dropped.
+std::vector<std::string> distractorDescriptions(const std::string& distractors);
 
 // The camera's parameters: names, fields and rules (simulated_depth_camera_ros_parameters.cpp).
 const ParameterTable<SimulatedDepthCameraRosParameters>& simulatedDepthCameraParameterTable();

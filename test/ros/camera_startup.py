@@ -41,6 +41,16 @@ class CameraStartup(unittest.TestCase):
                      preset={"visibility_anchors": [0.1, 0.2]})
         self.refused(["~camera_frame", "different from ~fixed_frame"], "_camera_frame:=world")
 
+    def test_a_scene_that_cannot_be_built_is_refused(self):
+        self.refused(["~table_size", "both positive, or [0, 0]", "got [1, 0]"],
+                     preset={"table_size": [1.0, 0.0]})
+        self.refused(["~distractor_poses", "one x, y, z, roll, pitch, yaw pose per distractor",
+                      "(2 in ~distractors)"],
+                     preset={"distractors": "box 0.1 0.1 0.1; cylinder 0.03 0.2",
+                             "distractor_poses": [0.0, 0.2, 0.0, 0.0, 0.0, 0.0]})
+        self.refused(["distractor 'cone 0.1'"], preset={"distractors": "cone 0.1",
+                                                       "distractor_poses": [0.0] * 6})
+
     def test_starts_with_its_config_file(self):
         assert_starts(self, NODE, "simulated_depth_camera.yaml", "move_to", "_mesh:=mug")
 
