@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # `make demo`: the closed loop of launch/demo.launch on the built-in mug, headless. A simulated
-# camera, the orientation estimator, the informativeness server and the planner loop run until
-# the planner has taken $DEMO_VIEWS views; then the error after each view is printed.
+# camera streams a table-top scene at 15 Hz to the orientation estimator; the informativeness
+# server and the planner loop move the camera until it has been at $DEMO_VIEWS views; then the
+# error after each view is printed beside the belief's own 90 % cone.
 #   DEMO_MODEL    model bundle (default: the default mug model, trained into ~/.ros/vdc on the
 #                 first run and again whenever vdc was rebuilt since)
 #   DEMO_VIEWS    views (default 8)        DEMO_UTILITY  informativeness | information_gain
@@ -45,11 +46,12 @@ if [[ ! -f "$out/errors.csv" ]]; then
   exit 1
 fi
 echo
-echo "== orientation error after each view (MAP vs ground truth)"
+echo "== orientation error after each view (MAP vs ground truth) and the belief's 90 % cone"
 /usr/bin/python3 - "$out/errors.csv" <<'EOF'
 import csv, sys
 for row in csv.DictReader(open(sys.argv[1])):
-    print("view %2s: error %6.1f deg, entropy %6.2f nats"
-          % (row["view"], float(row["error_deg"]), float(row["entropy_nats"])))
+    print("view %2s: error %6.1f deg, cone90 %6.1f deg, %2s views fused, entropy %6.2f nats"
+          % (row["view"], float(row["error_deg"]), float(row["cone90_deg"]), row["views_fused"],
+             float(row["entropy_nats"])))
 EOF
 echo "results: $out/errors.csv, plot: $out/errors.png"

@@ -18,6 +18,7 @@ packages=(
   # rospy side: rostest, rostopic, rosservice and the test scripts
   librostest-dev python3-rostest python3-rospy python3-sensor-msgs python3-geometry-msgs
   python3-std-srvs python3-visualization-msgs python3-tf2-ros python3-numpy
+  python3-diagnostic-msgs
   rosbash python3-roslaunch python3-rosnode python3-rosservice python3-rostopic rosout
   # the core's libraries
   libpcl-dev libflann-dev libeigen3-dev liblbfgspp-dev libhdf5-dev hdf5-tools python3-h5py

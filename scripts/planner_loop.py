@@ -1,14 +1,18 @@
 #!/usr/bin/python3
-"""The demo's closed loop: ask the informativeness server for the next best view, move the
-simulated camera there, let the estimator fuse exactly one cloud from that view, measure the
-orientation error against the ground truth, repeat; then write errors.csv and a plot and exit.
+"""The demo's closed loop on the camera's stream: ask the informativeness server for the next best
+view, move the simulated camera there, wait until the orientation estimator (subscribed straight
+to the camera's cloud) has fused a new view, measure the orientation error against the ground
+truth, repeat; then write errors.csv and a plot and exit.
+
+The loop never touches a cloud: the estimator picks the frames worth featurising from the stream
+itself (frame selection, doc/method.md section 12), and `views_fused` in its ~estimate says when
+the move gave it a new view.
 
 Topics and services (relative names, remapped in launch/demo.launch):
   next_best_view (GetNextBestView)  the informativeness server's ~next_best_view
   move_to (MoveCamera)              the simulated camera's ~move_to
-  camera_cloud (in, PointCloud2)    the simulated camera's ~cloud
-  ~view_cloud (out, PointCloud2)    the estimator's input: one cloud per planned view
   estimate (in, BinghamMixture)     the estimator's ~estimate
+  /diagnostics (in)                 the estimator's status: why a view was not fused, frame counts
 Private parameters: see PARAMETERS below (also listed in doc/nodes.md, "planner_loop.py").
 """
 import csv
@@ -19,25 +23,42 @@ import threading
 
 import numpy as np
 import rospy
-import sensor_msgs.msg
 import tf2_ros
+from diagnostic_msgs.msg import DiagnosticArray
 from view_direction_classification.msg import BinghamMixture
 from view_direction_classification.srv import (GetNextBestView, GetNextBestViewRequest,
                                                MoveCamera, MoveCameraRequest)
 
 # name: (default, meaning)
 PARAMETERS = {
-    "views": (8, "views per run, the camera's initial view included"),
+    "views": (8, "camera positions per run, the camera's initial one included"),
     "utility": ("informativeness", "next-best-view utility: informativeness or information_gain"),
-    "sample_count": (50, "candidate camera poses sampled around the object per step"),
+    "sample_count": (100, "candidate camera poses sampled around the object per step"),
     "sample_distance": (0.6, "their distance from the object [m] (the training distance)"),
     "min_view_separation_deg": (20.0, "a candidate this close to a visited view is not taken"),
+    "min_elevation_deg": (15.0, "a candidate lower than this above the object's horizontal "
+                                "plane is not taken (the table hides the object from below)"),
     "fixed_frame": ("world", "frame of the camera poses and of the estimate"),
     "ground_truth_frame": ("object_ground_truth", "tf frame of the true object pose"),
     "object_frame": ("object", "tf frame of the estimated object pose (the estimator's)"),
     "camera_frame": ("camera_optical_frame", "the camera's tf frame"),
-    "timeout": (120.0, "seconds to wait for services, a cloud from the new view, an estimate"),
+    "timeout": (120.0, "seconds to wait for the services and the first estimate"),
+    "fuse_timeout": (10.0, "seconds after a move to wait for the estimator to fuse the new view"),
+    "start_delay": (0.0, "seconds to wait before the first view is recorded and the camera "
+                         "moves (demo.launch gui:=true: for rviz to come up)"),
+    "linger": (0.0, "seconds to stay at the last view after writing the results, before the "
+                    "node exits and ends the launch (gui:=true: to look at rviz)"),
     "output_dir": ("demo_output", "where errors.csv and errors.png go (created if missing)"),
+}
+
+# The estimator's diagnostic status (orientation_estimator_ros.cpp, diagnose()).
+DIAGNOSTIC_KEYS = {
+    "clouds received": "received",
+    "clouds fused (new views)": "fused",
+    "clouds not novel (a view already fused)": "not_novel",
+    "clouds dropped (a newer one arrived first)": "dropped",
+    "clouds skipped (bad input or no tf)": "skipped",
+    "last skip reason": "last_skip_reason",
 }
 
 
@@ -61,66 +82,77 @@ class PlannerLoop:
         if self.p["utility"] not in ("informativeness", "information_gain"):
             raise ValueError("Parameter ~utility must be informativeness or information_gain, "
                              "got '%s'." % self.p["utility"])
+        for name in ("timeout", "fuse_timeout"):
+            if not float(self.p[name]) > 0.0:
+                raise ValueError("Parameter ~%s must be > 0 [s], got %s." % (name, self.p[name]))
+        for name in ("start_delay", "linger"):
+            if not float(self.p[name]) >= 0.0:
+                raise ValueError("Parameter ~%s must be >= 0 [s], got %s." % (name, self.p[name]))
         self.timeout = rospy.Duration(float(self.p["timeout"]))
+        self.fuse_timeout = rospy.Duration(float(self.p["fuse_timeout"]))
         self.tf_buffer = tf2_ros.Buffer(cache_time=rospy.Duration(120))
         self.tf_listener = tf2_ros.TransformListener(self.tf_buffer)
         self.condition = threading.Condition()
-        self.latest_cloud = None
         self.latest_estimate = None
-        self.view_cloud_publisher = rospy.Publisher("~view_cloud", sensor_msgs.msg.PointCloud2,
-                                                    queue_size=1)
-        rospy.Subscriber("camera_cloud", sensor_msgs.msg.PointCloud2, self.on_cloud,
-                         queue_size=1)
+        self.estimator_status = {}
         rospy.Subscriber("estimate", BinghamMixture, self.on_estimate, queue_size=5)
-
-    def on_cloud(self, cloud):
-        with self.condition:
-            self.latest_cloud = cloud
-            self.condition.notify_all()
+        rospy.Subscriber("/diagnostics", DiagnosticArray, self.on_diagnostics, queue_size=5)
 
     def on_estimate(self, estimate):
         with self.condition:
             self.latest_estimate = estimate
             self.condition.notify_all()
 
-    def wait_for(self, predicate, what):
-        """The first non-None value of predicate() (called under the lock), or an error."""
-        deadline = rospy.Time.now() + self.timeout
+    def on_diagnostics(self, array):
+        for status in array.status:
+            values = {DIAGNOSTIC_KEYS[v.key]: v.value for v in status.values
+                      if v.key in DIAGNOSTIC_KEYS}
+            if "received" in values:  # the estimator's status (other nodes may publish too)
+                with self.condition:
+                    self.estimator_status = values
+
+    def wait_for(self, predicate, timeout):
+        """The first non-None value of predicate() (called under the lock) within timeout, or
+        None."""
+        deadline = rospy.Time.now() + timeout
         with self.condition:
             while not rospy.is_shutdown():
                 value = predicate()
                 if value is not None:
                     return value
                 if rospy.Time.now() > deadline:
-                    break
+                    return None
                 self.condition.wait(0.1)
-        raise RuntimeError("No %s within %.0f s." % (what, self.timeout.to_sec()))
+        return None
 
-    def camera_position_at(self, stamp):
-        t = self.tf_buffer.lookup_transform(self.p["fixed_frame"], self.p["camera_frame"], stamp,
-                                            rospy.Duration(1.0))
-        v = t.transform.translation
-        return np.array([v.x, v.y, v.z])
+    def wait_for_new_view(self, views_before, moved_at):
+        """The first estimate that fused a view after the move (views_fused above views_before,
+        stamped after moved_at), or None after ~fuse_timeout."""
+        def fused():
+            e = self.latest_estimate
+            if e is not None and e.views_fused > views_before and e.header.stamp >= moved_at:
+                return e
+            return None
+        return self.wait_for(fused, self.fuse_timeout)
 
-    def take_view(self, expected_position, after):
-        """Forward to the estimator the first camera cloud stamped after `after` that was rendered
-        from `expected_position` (the camera's timer may have rendered one more cloud from the old
-        pose while the move was served), and return its stamp."""
-        def fresh_cloud():
-            c = self.latest_cloud
-            return c if c is not None and c.header.stamp > after else None
+    def not_fused_message(self, view, views_before):
+        reason = self.estimator_status.get("last_skip_reason", "none")
+        if reason == "none":
+            why = ("it saw only views it had fused already (within its ~min_view_separation of a "
+                   "fused view: raise ~min_view_separation_deg), or no frame arrived")
+        else:
+            why = "its last skip reason: " + reason
+        return ("view %d: the estimator fused no new view within %.0f s of the move "
+                "(views_fused stays %d); %s. Frames so far: %s."
+                % (view, self.fuse_timeout.to_sec(), views_before, why, self.frame_counts()))
 
-        while True:
-            cloud = self.wait_for(fresh_cloud, "camera cloud after the move")
-            after = cloud.header.stamp
-            try:
-                position = self.camera_position_at(cloud.header.stamp)
-            except tf2_ros.TransformException as error:
-                rospy.logwarn("planner: no camera tf for a cloud (%s); waiting for the next", error)
-                continue
-            if expected_position is None or np.linalg.norm(position - expected_position) < 1e-3:
-                self.view_cloud_publisher.publish(cloud)
-                return cloud.header.stamp, position
+    def frame_counts(self):
+        s = self.estimator_status
+        if not s:
+            return "no diagnostics from the estimator yet"
+        return ("%s received, %s fused, %s not novel, %s dropped, %s skipped"
+                % tuple(s.get(k, "?") for k in ("received", "fused", "not_novel", "dropped",
+                                                 "skipped")))
 
     def next_best_pose(self, visited_directions, object_position):
         request = GetNextBestViewRequest(sample_count=int(self.p["sample_count"]),
@@ -130,23 +162,30 @@ class PlannerLoop:
         if not response.success:
             raise RuntimeError("The server refused the next-best-view request: %s"
                                % response.message)
-        # The ranking is best first; a view already taken would only repeat a measurement, so take
-        # the best candidate away from every visited one (as `vdc evaluate` takes unused ones).
+        # The ranking is best first. A view already taken would only repeat a measurement (the
+        # estimator would not even fuse it), and a camera under the table sees no object: take
+        # the best candidate above the table and away from every visited view.
         min_cos = math.cos(math.radians(float(self.p["min_view_separation_deg"])))
+        min_sin_elevation = math.sin(math.radians(float(self.p["min_elevation_deg"])))
         for pose, utility in zip(response.ranked.poses, response.utilities):
             p = pose.position
-            direction = np.array([p.x, p.y, p.z]) - object_position
-            direction /= np.linalg.norm(direction)
+            direction = self.unit(np.array([p.x, p.y, p.z]) - object_position)
+            if direction[2] < min_sin_elevation:
+                continue
             if all(direction.dot(v) < min_cos for v in visited_directions):
                 return pose, utility
-        raise RuntimeError("Every sampled candidate is within %.0f deg of a visited view; raise "
-                           "~sample_count or lower ~min_view_separation_deg."
-                           % self.p["min_view_separation_deg"])
+        raise RuntimeError("Every sampled candidate is within %.0f deg of a visited view or "
+                           "lower than %.0f deg; raise ~sample_count or lower "
+                           "~min_view_separation_deg."
+                           % (self.p["min_view_separation_deg"], self.p["min_elevation_deg"]))
 
     def truth(self):
         t = self.tf_buffer.lookup_transform(self.p["fixed_frame"], self.p["ground_truth_frame"],
                                             rospy.Time(0), self.timeout)
         return quaternion_tuple(t.transform.rotation)
+
+    def camera_position(self, pose):
+        return np.array([pose.position.x, pose.position.y, pose.position.z])
 
     def run(self):
         wait = self.timeout.to_sec()
@@ -155,53 +194,68 @@ class PlannerLoop:
         self.next_best_view = rospy.ServiceProxy("next_best_view", GetNextBestView)
         self.move_to = rospy.ServiceProxy("move_to", MoveCamera)
         true_orientation = self.truth()
-        # A cloud published before the estimator is connected would be lost.
-        self.wait_for(lambda: True if self.view_cloud_publisher.get_num_connections() > 0
-                      else None, "estimator subscribed to view_cloud")
         rospy.loginfo("planner: %d views, utility %s, results into %s", self.p["views"],
                       self.p["utility"], os.path.abspath(self.p["output_dir"]))
 
+        rospy.sleep(float(self.p["start_delay"]))
+        # View 1 is wherever the camera starts, as in `vdc evaluate`: the estimator fuses it
+        # from the stream as soon as it is up.
+        start = rospy.Time.now()
+        estimate = self.wait_for(lambda: self.latest_estimate, self.timeout)
+        if estimate is None:
+            raise RuntimeError("No estimate within %.0f s of the start: the estimator fused no "
+                               "frame of the camera's stream (last skip reason: %s; frames: %s)."
+                               % (wait, self.estimator_status.get("last_skip_reason", "none"),
+                                  self.frame_counts()))
         rows = []
         visited = []
-        start = rospy.Time.now()
+        camera = self.camera_position_now()
         for view in range(1, int(self.p["views"]) + 1):
             utility = float("nan")
-            expected = None
-            if view > 1:  # view 1 is wherever the camera starts, as in `vdc evaluate`
+            if view > 1:
                 object_position = self.estimated_position()
                 pose, utility = self.next_best_pose(visited, object_position)
+                views_before = self.latest_estimate.views_fused
+                moved_at = rospy.Time.now()
                 response = self.move_to(MoveCameraRequest(mode=MoveCameraRequest.MODE_POSE,
                                                           pose=pose))
                 if not response.success:
                     raise RuntimeError("The camera refused the move: %s" % response.message)
-                expected = np.array([pose.position.x, pose.position.y, pose.position.z])
-            moved_at = rospy.Time.now()
-            stamp, camera_position = self.take_view(expected, moved_at)
-            visited.append(self.unit(camera_position - self.estimated_position()))
-            try:
-                estimate = self.wait_for(
-                    lambda: self.latest_estimate if self.latest_estimate is not None
-                    and self.latest_estimate.header.stamp >= stamp else None,
-                    "estimate of view %d" % view)
-            except RuntimeError:
-                # The estimator skips views it cannot use (too few features); the belief stands.
-                rospy.logwarn("planner: view %d was not fused (see the estimator's warnings)",
-                              view)
+                camera = self.camera_position(pose)
+                fused = self.wait_for_new_view(views_before, moved_at)
+                if fused is None:
+                    rospy.logwarn("planner: %s", self.not_fused_message(view, views_before))
                 estimate = self.latest_estimate
-                if estimate is None:
-                    raise
-            error = rotation_error_deg(quaternion_tuple(estimate.map_orientation),
-                                       true_orientation)
-            direction = visited[-1]
-            rospy.loginfo("view %d: error %.1f deg, entropy %.2f nats, %d components, utility "
-                          "%.3f, camera direction (%.2f, %.2f, %.2f)", view, error,
-                          estimate.entropy, len(estimate.components), utility, *direction)
-            rows.append({"view": view, "error_deg": error, "entropy_nats": estimate.entropy,
-                         "components": len(estimate.components), "utility": utility,
-                         "direction_x": direction[0], "direction_y": direction[1],
-                         "direction_z": direction[2],
-                         "seconds": (rospy.Time.now() - start).to_sec()})
+            visited.append(self.unit(camera - self.estimated_position()))
+            rows.append(self.record(view, estimate, true_orientation, utility, visited[-1],
+                                    (rospy.Time.now() - start).to_sec()))
+        rospy.sleep(1.5)  # the estimator's diagnostics come once a second
+        rospy.loginfo("planner: the estimator's frames: %s", self.frame_counts())
         self.write(rows)
+        if self.p["linger"] > 0.0:
+            rospy.loginfo("planner: staying at the last view for %.0f s", self.p["linger"])
+            rospy.sleep(float(self.p["linger"]))
+
+    def record(self, view, estimate, true_orientation, utility, direction, seconds):
+        error = rotation_error_deg(quaternion_tuple(estimate.map_orientation), true_orientation)
+        rospy.loginfo("view %d: error %.1f deg, %d views fused, cone90 %.1f deg%s, entropy %.2f "
+                      "nats, %d components, utility %.3f, camera direction (%.2f, %.2f, %.2f)",
+                      view, error, estimate.views_fused, estimate.cone90_deg,
+                      " (converged)" if estimate.converged else "", estimate.entropy,
+                      len(estimate.components), utility, *direction)
+        return {"view": view, "error_deg": error, "views_fused": estimate.views_fused,
+                "cone90_deg": estimate.cone90_deg, "converged": int(estimate.converged),
+                "entropy_nats": estimate.entropy, "components": len(estimate.components),
+                "utility": utility, "direction_x": direction[0], "direction_y": direction[1],
+                "direction_z": direction[2], "seconds": seconds}
+
+    def camera_position_now(self):
+        """Where the camera starts (its tf), for the first view's direction."""
+        t = self.tf_buffer.lookup_transform(self.p["fixed_frame"], self.p["camera_frame"],
+                                            rospy.Time(0),
+                                            self.timeout)
+        v = t.transform.translation
+        return np.array([v.x, v.y, v.z])
 
     def estimated_position(self):
         """The object's position as the estimator publishes it (the server samples candidates
@@ -232,9 +286,14 @@ class PlannerLoop:
         import matplotlib.pyplot as plt
         views = [r["view"] for r in rows]
         figure, error_axis = plt.subplots(figsize=(6, 4), dpi=100)
-        error_axis.plot(views, [r["error_deg"] for r in rows], "o-", color="tab:red")
+        error_axis.plot(views, [r["error_deg"] for r in rows], "o-", color="tab:red",
+                        label="MAP error")
+        # The belief's own claim: the truth should lie inside its 90 % cone.
+        error_axis.plot(views, [r["cone90_deg"] for r in rows], "^:", color="tab:orange",
+                        label="cone90 (belief)")
+        error_axis.legend(loc="upper right")
         error_axis.set_xlabel("view")
-        error_axis.set_ylabel("MAP orientation error [deg]", color="tab:red")
+        error_axis.set_ylabel("MAP error, 90 % cone [deg]", color="tab:red")
         error_axis.set_ylim(bottom=0)
         error_axis.set_xticks(views)
         entropy_axis = error_axis.twinx()
