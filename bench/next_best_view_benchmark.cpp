@@ -61,7 +61,7 @@ vdc::BinghamMixture oneViewBelief(const vdc::ModelBundle& bundle) {
 }
 
 void BM_RankInformativeness(benchmark::State& state) {
-  const vdc::NextBestViewPlanner planner(syntheticBundle());
+  const vdc::ViewUtilityScorer scorer(syntheticBundle());
   const auto candidates = candidatePositions();
   vdc::PlanningScene scene;
   scene.object_position = Eigen::Vector3d(0.5, 0, 0.2);
@@ -73,7 +73,7 @@ void BM_RankInformativeness(benchmark::State& state) {
   }
   for (auto _ : state) {
     auto ranked =
-        vdc::rankCandidates(planner, candidates, vdc::ViewUtility::kInformativeness, scene);
+        vdc::rankCandidates(scorer, candidates, vdc::ViewUtility::kInformativeness, scene);
     benchmark::DoNotOptimize(ranked.data());
   }
   state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(candidates.size()));
@@ -83,7 +83,7 @@ BENCHMARK(BM_RankInformativeness)->Arg(0)->Arg(2000)->Unit(benchmark::kMilliseco
 
 void BM_RankInformationGain(benchmark::State& state) {
   const auto bundle = syntheticBundle();
-  const vdc::NextBestViewPlanner planner(bundle);
+  const vdc::ViewUtilityScorer scorer(bundle);
   const auto candidates = candidatePositions();
   vdc::PlanningScene scene;
   scene.object_position = Eigen::Vector3d(0.5, 0, 0.2);
@@ -91,8 +91,8 @@ void BM_RankInformationGain(benchmark::State& state) {
   vdc::NextBestViewOptions options;
   options.samples_per_component = static_cast<int>(state.range(0));
   for (auto _ : state) {
-    auto ranked = vdc::rankCandidates(planner, candidates, vdc::ViewUtility::kInformationGain,
-                                      scene, options);
+    auto ranked =
+        vdc::rankCandidates(scorer, candidates, vdc::ViewUtility::kInformationGain, scene, options);
     benchmark::DoNotOptimize(ranked.data());
   }
   state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(candidates.size()));

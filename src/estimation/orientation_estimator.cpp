@@ -131,7 +131,7 @@ OrientationEstimator::OrientationEstimator(std::shared_ptr<const ModelBundle> mo
   independent_view_separation_ =
       selection.independent_view_separation < 0.0 ? spacing : selection.independent_view_separation;
   if (selection.min_information_gain > 0.0) {
-    gain_planner_ = std::make_shared<const NextBestViewPlanner>(model_);
+    gain_scorer_ = std::make_shared<const ViewUtilityScorer>(model_);
   }
 
   const SegmentationParameters& segmentation = parameters_.segmentation;
@@ -320,12 +320,12 @@ bool OrientationEstimator::isNewView(const Eigen::Vector3d& camera_position,
   const double exponent = likelihoodExponent(separation, independent_view_separation_);
   if (exponent < kMinLikelihoodExponent) return false;
   if (separation >= min_view_separation_) return true;
-  if (!gain_planner_) return false;
+  if (!gain_scorer_) return false;
   if (!hypotheses_cache_) {
     hypotheses_cache_ = beliefHypotheses(belief(), kGainSamplesPerComponent);
   }
   const double gain =
-      gain_planner_->informationGain(camera_position, viewingReference(), *hypotheses_cache_);
+      gain_scorer_->informationGain(camera_position, viewingReference(), *hypotheses_cache_);
   return exponent * gain >= parameters_.selection.min_information_gain;
 }
 

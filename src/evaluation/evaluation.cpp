@@ -65,8 +65,8 @@ std::vector<double> visibleFractions(const TriangleMesh& mesh,
 }
 
 // Index of the next candidate: the random planner takes them in order; a utility planner ranks
-// the unused candidates under the current belief and takes the best.
-int chooseCandidate(EvaluationPlanner planner, const NextBestViewPlanner* utilities,
+// the unused candidates by its utility (the scorer) under the current belief and takes the best.
+int chooseCandidate(EvaluationPlanner planner, const ViewUtilityScorer* scorer,
                     const OrientationEstimator& estimator, const EvaluationSequence& sequence,
                     const std::vector<bool>& used, int view, const EvaluationSettings& settings) {
   if (planner == EvaluationPlanner::kRandom || view == 0) return view;
@@ -90,7 +90,7 @@ int chooseCandidate(EvaluationPlanner planner, const NextBestViewPlanner* utilit
                                   ? ViewUtility::kInformativeness
                                   : ViewUtility::kInformationGain;
   const std::vector<RankedCandidate> ranked =
-      rankCandidates(*utilities, positions, utility, scene, options);
+      rankCandidates(*scorer, positions, utility, scene, options);
   return index_of[static_cast<std::size_t>(ranked.front().index)];
 }
 
@@ -226,9 +226,9 @@ EvaluationResult evaluateEstimator(std::shared_ptr<const ModelBundle> model,
   // Fails early (not inside the threads) for bad estimator parameters.
   { const OrientationEstimator check(model, settings.estimator); }
   const DepthRenderer renderer(mesh, intrinsicsOf(model->parameters));
-  std::unique_ptr<NextBestViewPlanner> utilities;
+  std::unique_ptr<ViewUtilityScorer> scorer;
   if (planner != EvaluationPlanner::kRandom) {
-    utilities = std::make_unique<NextBestViewPlanner>(model);
+    scorer = std::make_unique<ViewUtilityScorer>(model);
   }
   const std::vector<double> radii = radiiOf(settings);
   const std::vector<double> fractions = visibleFractions(mesh, anchors, settings);
@@ -256,7 +256,7 @@ EvaluationResult evaluateEstimator(std::shared_ptr<const ModelBundle> model,
       for (int v = 0; v < settings.views; ++v) {
         const auto plan_start = std::chrono::steady_clock::now();
         const int candidate =
-            chooseCandidate(planner, utilities.get(), estimator, sequence, used, v, settings);
+            chooseCandidate(planner, scorer.get(), estimator, sequence, used, v, settings);
         if (planner != EvaluationPlanner::kRandom && v > 0) {
           out.planning_ms += millisecondsSince(plan_start);
           ++out.planned;

@@ -91,7 +91,7 @@ InformativenessServerRos::InformativenessServerRos(ros::NodeHandle node,
       parameters_(readInformativenessServerRosParameters(private_node)),
       tf_listener_(tf_buffer_) {
   model_ = std::make_shared<const ModelBundle>(loadModelBundle(parameters_.model_path));
-  planner_ = std::make_unique<NextBestViewPlanner>(model_);
+  scorer_ = std::make_unique<ViewUtilityScorer>(model_);
 
   heatmap_publisher_ = private_node_.advertise<sensor_msgs::PointCloud2>("heatmap", 1, true);
   view_scores_publisher_ =
@@ -115,7 +115,7 @@ InformativenessServerRos::InformativenessServerRos(ros::NodeHandle node,
   estimate_subscriber_ =
       node_.subscribe("estimate", 1, &InformativenessServerRos::receiveEstimate, this);
   ROS_INFO("Informativeness server: model %s (%d views, %zu surface points), object frame %s in %s",
-           parameters_.model_path.c_str(), planner_->viewCount(), model_->surface_points.size(),
+           parameters_.model_path.c_str(), scorer_->viewCount(), model_->surface_points.size(),
            parameters_.object_frame.c_str(), parameters_.fixed_frame.c_str());
 }
 
@@ -137,7 +137,7 @@ void InformativenessServerRos::publishScoreTopics() {
   sphere.action = visualization_msgs::Marker::ADD;
   sphere.pose.orientation.w = 1.0;
   sphere.scale.x = sphere.scale.y = sphere.scale.z = 0.015;
-  for (int m = 0; m < planner_->viewCount(); ++m) {
+  for (int m = 0; m < scorer_->viewCount(); ++m) {
     sphere.id = m;
     sphere.pose.position = tf2::toMsg(Eigen::Vector3d(parameters_.view_marker_distance *
                                                       model_->view_directions[m].normalized()));
@@ -210,7 +210,7 @@ bool InformativenessServerRos::getHeatmap(GetHeatmap::Request& request,
 
 void InformativenessServerRos::answerHeatmap(const GetHeatmap::Request& request,
                                              GetHeatmap::Response& response) const {
-  const int views = planner_->viewCount();
+  const int views = scorer_->viewCount();
   int view = -1;
   if (request.mode == GetHeatmap::Request::MODE_VIEW_INDEX) {
     if (request.view_index < 0 || request.view_index >= views) {
@@ -219,7 +219,7 @@ void InformativenessServerRos::answerHeatmap(const GetHeatmap::Request& request,
     }
     view = request.view_index;
   } else if (request.mode == GetHeatmap::Request::MODE_DIRECTION) {
-    view = planner_->nearestView(
+    view = scorer_->nearestView(
         Eigen::Vector3d(request.direction.x, request.direction.y, request.direction.z));
   } else if (request.mode != GetHeatmap::Request::MODE_GLOBAL) {
     throw Error("Unknown mode " + std::to_string(int(request.mode)) +
@@ -332,7 +332,7 @@ void InformativenessServerRos::answerNextBestView(const GetNextBestView::Request
   NextBestViewOptions options;
   options.samples_per_component = parameters_.belief_samples_per_component;
   const std::vector<RankedCandidate> ranked =
-      rankCandidates(*planner_, positions, utility, scene, options);
+      rankCandidates(*scorer_, positions, utility, scene, options);
 
   response.ranked.header.frame_id = parameters_.fixed_frame;
   response.ranked.header.stamp = ros::Time::now();

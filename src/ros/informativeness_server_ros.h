@@ -56,7 +56,7 @@ class InformativenessServerRos {
   ros::NodeHandle node_, private_node_;
   InformativenessServerRosParameters parameters_;
   std::shared_ptr<const ModelBundle> model_;
-  std::unique_ptr<NextBestViewPlanner> planner_;
+  std::unique_ptr<ViewUtilityScorer> scorer_;
 
   std::mutex belief_mutex_;  // the estimate callback and the services may run concurrently
   std::optional<BinghamMixture> latest_belief_;

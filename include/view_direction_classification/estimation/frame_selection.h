@@ -19,8 +19,8 @@ struct FrameSelectionParameters {
   // Negative: half the model's view spacing (15.9 deg for 42 directions); 0: every frame is new.
   double min_view_separation = -1.0;
   // [nats] Optionally also a new view when the information it is predicted to add (the
-  // information_gain utility of the next-best-view planner under the current belief, times the
-  // likelihood exponent below) reaches this; 0: off.
+  // information_gain view utility (planning/view_utility_scorer.h) under the current belief, times
+  // the likelihood exponent below) reaches this; 0: off.
   double min_information_gain = 0.0;
   // [rad] A view this far from every fused one is independent evidence (likelihood exponent 1);
   // a nearer one is tempered with exponent separation / independent_view_separation.

@@ -16,7 +16,7 @@
 #include "view_direction_classification/estimation/object_segmentation.h"
 #include "view_direction_classification/estimation/object_tracking.h"
 #include "view_direction_classification/estimation/orientation_filter.h"
-#include "view_direction_classification/planning/next_best_view.h"
+#include "view_direction_classification/planning/view_utility_scorer.h"
 #include "view_direction_classification/training/model_bundle.h"
 
 namespace vdc {
@@ -173,7 +173,7 @@ class OrientationEstimator {
   std::optional<StampedPose> last_pose_;
   std::optional<Eigen::Vector3d> last_centroid_world_, last_camera_position_world_;
   // Only when selection.min_information_gain > 0.
-  std::shared_ptr<const NextBestViewPlanner> gain_planner_;
+  std::shared_ptr<const ViewUtilityScorer> gain_scorer_;
   // The MAP costs a search over every component: computed once per belief, on first request;
   // the spread and the information-gain hypotheses likewise.
   mutable std::optional<Eigen::Vector4d> map_cache_;
