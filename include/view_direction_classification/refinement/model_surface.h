@@ -1,0 +1,43 @@
+#pragma once
+
+#include <pcl/kdtree/kdtree_flann.h>
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <vector>
+
+namespace vdc {
+
+// The model's surface as refinement uses it (doc/method.md, "Refinement"): surface samples with
+// their outward normals in the object frame (the bundle's set S, thinned to `spacing`), a k-d tree
+// over them and the object's extent. Immutable after construction; searches are const, so one
+// instance may serve several threads.
+class ModelSurface {
+ public:
+  // points and normals: the same size, finite, normals unit. spacing [m] > 0: the samples are
+  // thinned (every k-th of the stratified set, which keeps its uniform density) to about this
+  // spacing when they are denser; source_spacing is theirs. bounds: the object's box. Throws
+  // vdc::Error for fewer than 10 samples, a size mismatch, non-finite values, an empty box or a
+  // non-positive spacing.
+  ModelSurface(const std::vector<Eigen::Vector3f>& points,
+               const std::vector<Eigen::Vector3f>& normals, const Eigen::AlignedBox3d& bounds,
+               double source_spacing, double spacing);
+
+  const pcl::PointCloud<pcl::PointNormal>::Ptr& cloud() const { return cloud_; }
+  const pcl::KdTreeFLANN<pcl::PointNormal>& tree() const { return tree_; }
+  std::size_t size() const { return cloud_->size(); }
+  // [m] The thinned samples' spacing (never below the source's).
+  double spacing() const { return spacing_; }
+  const Eigen::AlignedBox3d& bounds() const { return bounds_; }
+  double diagonal() const { return bounds_.diagonal().norm(); }
+
+ private:
+  pcl::PointCloud<pcl::PointNormal>::Ptr cloud_;
+  pcl::KdTreeFLANN<pcl::PointNormal> tree_;
+  double spacing_;
+  Eigen::AlignedBox3d bounds_;
+};
+
+}  // namespace vdc

@@ -1,0 +1,97 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "view_direction_classification/bingham/bingham_mixture.h"
+#include "view_direction_classification/refinement/model_surface.h"
+#include "view_direction_classification/refinement/pose_hypotheses.h"
+#include "view_direction_classification/refinement/pose_verification.h"
+#include "view_direction_classification/training/model_bundle.h"
+
+namespace vdc {
+
+// Settings of the geometric refinement (doc/method.md, "Refinement").
+struct RefinementParameters {
+  HypothesisParameters hypotheses;
+  VerificationParameters verification;
+  double model_spacing = 0.004;  // [m] the bundle's surface set thinned to this for ICP and scores
+  double scene_voxel = 0.004;    // [m] the observed points are voxel-filtered to this for ICP
+  int min_points = 50;           // fewer finite observed points: refinement is skipped
+  // An observation whose bounding box diagonal exceeds this many model diagonals is not (only)
+  // the object: skipped.
+  double max_extent_ratio = 2.0;
+  // Point-to-plane ICP (PCL), the observed points against the model's surface.
+  int max_iterations = 100;                    // not converged within these: refused
+  double max_correspondence_distance = 0.015;  // [m]
+  // ICP moving the pose further than this from its start has left the hypothesis: refused.
+  double max_translation_step = 0.03;   // [m]
+  double max_rotation_step_deg = 45.0;  // [deg]
+  // Acceptance: the verification score (inliers minus violations) at least min_score and not
+  // lower than the start's, and the belief's log density at the refined orientation at most
+  // max_log_density_drop below the start's (the result stays in the belief's credible region:
+  // ln 1000 by default).
+  double min_score = 0.8;
+  double max_log_density_drop = 6.9;
+  // Accepted poses scoring within keep_score_margin of the best are kept; poses within
+  // duplicate_angle_deg and duplicate_distance of a better one are the same pose.
+  double keep_score_margin = 0.03;
+  double duplicate_angle_deg = 5.0;
+  double duplicate_distance = 0.005;  // [m]
+};
+
+// One hypothesis and what refinement made of it.
+struct RefinedPose {
+  Eigen::Vector4d start_orientation = Eigen::Vector4d(1, 0, 0, 0);  // q_WO, from the belief
+  int component = 0;                                                // its belief component
+  Eigen::Isometry3d start = Eigen::Isometry3d::Identity();          // world_from_object before ICP
+  Eigen::Isometry3d world_from_object = Eigen::Isometry3d::Identity();  // after ICP
+  Eigen::Vector4d orientation = Eigen::Vector4d(1, 0, 0, 0);  // q_WO of world_from_object, w >= 0
+  VerificationScore start_score, score;
+  double fitness = 0.0;  // [m^2] ICP's mean squared correspondence distance
+  bool accepted = false;
+  std::string rejection;  // why it was refused (one sentence), empty when accepted
+};
+
+struct RefinementResult {
+  std::string skip_reason;         // non-empty: bad input, nothing was tried
+  std::vector<RefinedPose> tried;  // every hypothesis, in the order they were made
+  // The distinct accepted poses within keep_score_margin of the best, best first. Empty when
+  // skipped or nothing was accepted; several where geometry cannot tell them apart.
+  std::vector<RefinedPose> kept;
+  double milliseconds = 0.0;
+  bool skipped() const { return !skip_reason.empty(); }
+};
+
+// Hypothesis refinement after fusion (doc/method.md, "Refinement"): the belief's leading
+// orientations (pose_hypotheses.h) are each placed so that the model's camera-facing centroid
+// meets the observed centroid, aligned to the observed points by point-to-plane ICP against the
+// model's surface samples, and verified (pose_verification.h). No ROS; refine() is const.
+class PoseRefiner {
+ public:
+  // Throws vdc::Error for invalid parameters.
+  PoseRefiner(std::shared_ptr<const ModelSurface> surface, RefinementParameters parameters = {});
+  // The bundle's surface set S (with its normals and extent) thinned to model_spacing.
+  PoseRefiner(const ModelBundle& model, RefinementParameters parameters = {});
+
+  // belief: over q_WO (fixed frame). position: the current estimate of the object origin in the
+  // fixed frame. views: the object's points (camera frames) with their camera poses; several
+  // views are aligned together in the fixed frame. Never throws for input content: too few
+  // finite points, a non-finite position or camera pose, or points spread far beyond the
+  // model's size give skip_reason and no poses.
+  RefinementResult refine(const BinghamMixture& belief, const Eigen::Vector3d& position,
+                          const std::vector<RefinementView>& views) const;
+
+  const RefinementParameters& parameters() const { return parameters_; }
+  const ModelSurface& surface() const { return *surface_; }
+
+ private:
+  std::shared_ptr<const ModelSurface> surface_;
+  RefinementParameters parameters_;
+};
+
+}  // namespace vdc

@@ -1,0 +1,78 @@
+#pragma once
+
+#include <pcl/kdtree/kdtree_flann.h>
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <memory>
+#include <vector>
+
+#include "view_direction_classification/refinement/model_surface.h"
+
+namespace vdc {
+
+// One observation of the object: its points in the camera frame (finite; the segmented object)
+// and where the camera was in the fixed frame.
+struct RefinementView {
+  pcl::PointCloud<pcl::PointXYZ>::ConstPtr points;
+  Eigen::Isometry3d world_from_camera = Eigen::Isometry3d::Identity();
+};
+
+struct VerificationParameters {
+  // [m] An observed point is explained by the model when a model sample lies within twice the
+  // samples' spacing (at least 4 mm) and the point is within inlier_distance of its tangent plane.
+  double inlier_distance = 0.003;
+  // [m] A model sample that faces the camera and lies this much in front of the observed surface
+  // along its ray occupies space the camera saw through.
+  double free_space_tolerance = 0.008;
+  // Samples facing the camera at a cosine below this (grazing, near the silhouette) are not
+  // predicted: their visibility depends on sub-pixel geometry.
+  double min_facing_cosine = 0.3;
+};
+
+// The render-and-compare score of one pose (doc/method.md, "Refinement"), computed on points: the
+// model's camera-facing samples are its predicted depth, the observed points the measured one.
+struct VerificationScore {
+  double inlier_fraction = 0.0;  // observed points the model explains
+  // Predicted samples the observation contradicts: in front of the observed surface (the camera
+  // saw through them), or where nothing was observed at all (the object's points are segmented,
+  // so a prediction outside them is a surface that is not there). Samples behind the observed
+  // surface are occluded, which is no contradiction.
+  double violation_fraction = 0.0;
+  int observed = 0, predicted = 0;
+  // inlier_fraction - violation_fraction, in [-1, 1]: both halves matter, a pose that explains
+  // the points with a model part sticking out into free space is as wrong as one that leaves
+  // points unexplained.
+  double score() const { return inlier_fraction - violation_fraction; }
+};
+
+// Scores poses of the model against a fixed set of views. Building one indexes each view's
+// points by their ray (x/z, y/z), once for all poses. Scoring is const and thread-safe.
+class PoseVerifier {
+ public:
+  // Throws vdc::Error for negative or non-finite parameters.
+  PoseVerifier(std::shared_ptr<const ModelSurface> surface,
+               const std::vector<RefinementView>& views, VerificationParameters parameters = {});
+
+  // world_from_object: the pose to score. Views without points count for nothing.
+  VerificationScore score(const Eigen::Isometry3d& world_from_object) const;
+
+ private:
+  struct IndexedView {
+    pcl::PointCloud<pcl::PointXYZ>::ConstPtr points;
+    pcl::PointCloud<pcl::PointXYZ>::Ptr rays;  // (x/z, y/z, 0) of each point
+    pcl::KdTreeFLANN<pcl::PointXYZ> ray_tree;
+    Eigen::Isometry3d camera_from_world;
+  };
+  void addViewScore(const IndexedView& view, const Eigen::Isometry3d& world_from_object,
+                    int* inliers, int* violations, VerificationScore* score) const;
+
+  std::shared_ptr<const ModelSurface> surface_;
+  std::vector<std::unique_ptr<IndexedView>> views_;
+  VerificationParameters parameters_;
+  double neighbour_radius_;
+};
+
+}  // namespace vdc

@@ -1,0 +1,43 @@
+#pragma once
+
+// Point-to-plane ICP of observed points against the model's surface (private to refinement:
+// PCL's registration types stay out of the public headers).
+
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+#include <Eigen/Geometry>
+
+#include <memory>
+
+#include "view_direction_classification/refinement/model_surface.h"
+
+namespace vdc {
+
+struct IcpSettings {
+  int max_iterations = 100;
+  double max_correspondence_distance = 0.015;
+};
+
+struct IcpOutcome {
+  bool converged = false;
+  Eigen::Isometry3d object_from_world = Eigen::Isometry3d::Identity();
+  double fitness = 0.0;  // [m^2]
+};
+
+// Aligns one fixed set of observed points (fixed frame) to the model from many starts, with one
+// k-d tree of the model for all of them. Not thread-safe.
+class IcpAlignment {
+ public:
+  IcpAlignment(std::shared_ptr<const ModelSurface> surface,
+               pcl::PointCloud<pcl::PointNormal>::Ptr observed_world, IcpSettings settings);
+  ~IcpAlignment();
+
+  // start: object_from_world of the hypothesis.
+  IcpOutcome align(const Eigen::Isometry3d& start_object_from_world);
+
+ private:
+  struct Registration;
+  std::unique_ptr<Registration> registration_;
+};
+
+}  // namespace vdc

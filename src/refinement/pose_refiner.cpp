@@ -1,0 +1,297 @@
+#include "view_direction_classification/refinement/pose_refiner.h"
+
+#include <pcl/common/centroid.h>
+#include <pcl/filters/voxel_grid.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <sstream>
+#include <string>
+#include <unordered_map>
+#include <utility>
+
+#include "icp_alignment.h"
+#include "view_direction_classification/common/error.h"
+#include "view_direction_classification/common/quaternion.h"
+#include "view_direction_classification/common/rotation_error.h"
+
+namespace vdc {
+
+namespace {
+
+constexpr double kDegrees = M_PI / 180.0;
+
+void checkPositive(double value, const char* name) {
+  if (!(value > 0.0) || !std::isfinite(value)) {
+    throw Error(std::string("refinement's ") + name + " must be positive and finite, got " +
+                std::to_string(value));
+  }
+}
+
+void checkParameters(const RefinementParameters& p) {
+  orientationHypotheses(BinghamMixture(), p.hypotheses);  // throws for invalid ones
+  checkPositive(p.model_spacing, "model_spacing");
+  checkPositive(p.scene_voxel, "scene_voxel");
+  checkPositive(p.max_extent_ratio, "max_extent_ratio");
+  checkPositive(p.max_correspondence_distance, "max_correspondence_distance");
+  checkPositive(p.max_translation_step, "max_translation_step");
+  checkPositive(p.max_rotation_step_deg, "max_rotation_step_deg");
+  checkPositive(p.max_log_density_drop, "max_log_density_drop");
+  checkPositive(p.duplicate_angle_deg, "duplicate_angle_deg");
+  checkPositive(p.duplicate_distance, "duplicate_distance");
+  if (p.min_points < 3) {
+    throw Error("refinement's min_points must be at least 3, got " + std::to_string(p.min_points));
+  }
+  if (p.max_iterations < 1) {
+    throw Error("refinement's max_iterations must be at least 1, got " +
+                std::to_string(p.max_iterations));
+  }
+  if (!(p.min_score >= -1.0 && p.min_score <= 1.0)) {
+    throw Error("refinement's min_score must be in [-1, 1], got " + std::to_string(p.min_score));
+  }
+  if (!(p.keep_score_margin >= 0.0) || !std::isfinite(p.keep_score_margin)) {
+    throw Error("refinement's keep_score_margin must be >= 0 and finite, got " +
+                std::to_string(p.keep_score_margin));
+  }
+}
+
+// The finite points of every view (their camera frames) and the same in the fixed frame.
+struct Observation {
+  std::vector<RefinementView> views;
+  pcl::PointCloud<pcl::PointXYZ>::Ptr world{new pcl::PointCloud<pcl::PointXYZ>};
+};
+
+Observation finitePoints(const std::vector<RefinementView>& views) {
+  Observation observation;
+  for (const RefinementView& view : views) {
+    pcl::PointCloud<pcl::PointXYZ>::Ptr finite(new pcl::PointCloud<pcl::PointXYZ>);
+    if (view.points) {
+      for (const auto& p : view.points->points) {
+        if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && p.z > 0.0f) {
+          finite->push_back(p);
+        }
+      }
+    }
+    const Eigen::Isometry3f world_from_camera = view.world_from_camera.cast<float>();
+    for (const auto& p : finite->points) {
+      pcl::PointXYZ q;
+      q.getVector3fMap() = world_from_camera * p.getVector3fMap();
+      observation.world->push_back(q);
+    }
+    observation.views.push_back({finite, view.world_from_camera});
+  }
+  return observation;
+}
+
+// Empty when the input can be refined, else why not.
+std::string badInputReason(const Observation& observation, const Eigen::Vector3d& position,
+                           const std::vector<RefinementView>& views, const ModelSurface& surface,
+                           const RefinementParameters& parameters) {
+  for (const RefinementView& view : views) {
+    if (!view.world_from_camera.matrix().allFinite()) return "a camera pose is not finite";
+  }
+  if (!position.allFinite()) return "the position estimate is not finite";
+  const int count = static_cast<int>(observation.world->size());
+  if (count < parameters.min_points) {
+    return "only " + std::to_string(count) + " finite object points, refinement needs " +
+           std::to_string(parameters.min_points);
+  }
+  Eigen::AlignedBox3d box;
+  for (const auto& p : observation.world->points) box.extend(p.getVector3fMap().cast<double>());
+  const double extent = box.diagonal().norm();
+  if (extent > parameters.max_extent_ratio * surface.diagonal()) {
+    std::ostringstream reason;
+    reason.precision(3);
+    reason << "the object points span " << extent << " m, more than " << parameters.max_extent_ratio
+           << " times the model's " << surface.diagonal() << " m";
+    return reason.str();
+  }
+  return "";
+}
+
+pcl::PointCloud<pcl::PointXYZ>::Ptr voxelFiltered(
+    const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& points, double voxel) {
+  pcl::VoxelGrid<pcl::PointXYZ> grid;
+  grid.setInputCloud(points);
+  const float leaf = static_cast<float>(voxel);
+  grid.setLeafSize(leaf, leaf, leaf);
+  pcl::PointCloud<pcl::PointXYZ>::Ptr filtered(new pcl::PointCloud<pcl::PointXYZ>);
+  grid.filter(*filtered);
+  return filtered;
+}
+
+// Each view's points thinned to the voxel: a 640 x 480 view of the mug has ~10 000, which would
+// make every score cost ten times more without changing it.
+std::vector<RefinementView> thinnedViews(const std::vector<RefinementView>& views, double voxel) {
+  std::vector<RefinementView> thinned;
+  for (const RefinementView& view : views) {
+    if (view.points->empty()) continue;
+    thinned.push_back({voxelFiltered(view.points, voxel), view.world_from_camera});
+  }
+  return thinned;
+}
+
+pcl::PointCloud<pcl::PointNormal>::Ptr icpSource(const pcl::PointCloud<pcl::PointXYZ>::Ptr& world,
+                                                 double voxel) {
+  pcl::PointCloud<pcl::PointNormal>::Ptr source(new pcl::PointCloud<pcl::PointNormal>);
+  for (const auto& p : voxelFiltered(world, voxel)->points) {
+    pcl::PointNormal point;
+    point.getVector3fMap() = p.getVector3fMap();
+    point.getNormalVector3fMap().setZero();
+    source->push_back(point);
+  }
+  return source;
+}
+
+// The centroid (object frame) of the samples a camera at `camera` (object frame) sees: a z-buffer
+// of the samples over angular cells about two sample spacings wide, nearest sample per cell.
+Eigen::Vector3d visibleCentroid(const ModelSurface& surface, const Eigen::Vector3d& camera) {
+  const Eigen::Vector3d forward = -camera.normalized();
+  const Eigen::Vector3d side = forward.unitOrthogonal();
+  const Eigen::Vector3d up = forward.cross(side);
+  const double cell = 2.0 * surface.spacing() / camera.norm();
+  std::unordered_map<std::int64_t, std::pair<double, Eigen::Vector3d>> nearest;
+  for (const auto& sample : surface.cloud()->points) {
+    const Eigen::Vector3d s = sample.getVector3fMap().cast<double>();
+    const Eigen::Vector3d ray = s - camera;
+    const double depth = ray.dot(forward);
+    if (depth <= 0.0 || sample.getNormalVector3fMap().cast<double>().dot(ray) >= 0.0) continue;
+    const auto u = static_cast<std::int64_t>(std::floor(ray.dot(side) / depth / cell));
+    const auto v = static_cast<std::int64_t>(std::floor(ray.dot(up) / depth / cell));
+    const std::int64_t key = (u << 32) ^ (v & 0xffffffff);
+    auto [it, inserted] = nearest.try_emplace(key, depth, s);
+    if (!inserted && depth < it->second.first) it->second = {depth, s};
+  }
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (const auto& [key, hit] : nearest) sum += hit.second;
+  return nearest.empty() ? sum : Eigen::Vector3d(sum / nearest.size());
+}
+
+// The pose of orientation q that puts the centroid of the model's part the first camera sees
+// (from where the position estimate is) onto the observed centroid. The estimator's position
+// comes from the MAP's centroid offset; for another roll the visible part, and so the offset,
+// differ by up to the object's size, more than ICP's correspondence distance.
+Eigen::Isometry3d placedHypothesis(const Eigen::Vector4d& q, const Eigen::Vector3d& position,
+                                   const Eigen::Vector3d& observed_centroid,
+                                   const Eigen::Vector3d& camera_position,
+                                   const ModelSurface& surface) {
+  const Eigen::Matrix3d rotation = quaternionToRotationMatrix(q);
+  const Eigen::Vector3d camera = rotation.transpose() * (camera_position - position);
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.linear() = rotation;
+  pose.translation() = observed_centroid - rotation * visibleCentroid(surface, camera);
+  return pose;
+}
+
+Eigen::Vector4d orientationOf(const Eigen::Isometry3d& pose) {
+  Eigen::Vector4d q = quaternionFromRotationMatrix(pose.linear());
+  return q(0) < 0.0 ? Eigen::Vector4d(-q) : q;
+}
+
+// Empty when the refined pose is accepted, else why not.
+std::string rejection(const RefinedPose& pose, const IcpOutcome& icp, const BinghamMixture& belief,
+                      const RefinementParameters& parameters) {
+  if (!icp.converged) return "ICP did not converge";
+  const double moved = (pose.world_from_object.translation() - pose.start.translation()).norm();
+  const double turned = rotationErrorDeg(pose.orientation, pose.start_orientation);
+  if (moved > parameters.max_translation_step || turned > parameters.max_rotation_step_deg) {
+    return "ICP diverged: it moved the pose by " + std::to_string(moved * 1000.0) + " mm and " +
+           std::to_string(turned) + " deg";
+  }
+  if (pose.score.score() < pose.start_score.score()) return "ICP made the verification worse";
+  if (pose.score.score() < parameters.min_score) {
+    return "verification score " + std::to_string(pose.score.score()) + " is below " +
+           std::to_string(parameters.min_score);
+  }
+  if (belief.logDensity(pose.orientation) <
+      belief.logDensity(pose.start_orientation) - parameters.max_log_density_drop) {
+    return "the refined orientation left the belief's credible region";
+  }
+  return "";
+}
+
+bool sameAs(const RefinedPose& a, const RefinedPose& b, const RefinementParameters& parameters) {
+  return rotationErrorDeg(a.orientation, b.orientation) < parameters.duplicate_angle_deg &&
+         (a.world_from_object.translation() - b.world_from_object.translation()).norm() <
+             parameters.duplicate_distance;
+}
+
+std::vector<RefinedPose> keptPoses(const std::vector<RefinedPose>& tried,
+                                   const RefinementParameters& parameters) {
+  std::vector<RefinedPose> accepted;
+  for (const RefinedPose& pose : tried) {
+    if (pose.accepted) accepted.push_back(pose);
+  }
+  std::stable_sort(
+      accepted.begin(), accepted.end(),
+      [](const RefinedPose& a, const RefinedPose& b) { return a.score.score() > b.score.score(); });
+  std::vector<RefinedPose> kept;
+  for (const RefinedPose& pose : accepted) {
+    if (pose.score.score() < accepted.front().score.score() - parameters.keep_score_margin) break;
+    const bool duplicate = std::any_of(kept.begin(), kept.end(), [&](const RefinedPose& other) {
+      return sameAs(pose, other, parameters);
+    });
+    if (!duplicate) kept.push_back(pose);
+  }
+  return kept;
+}
+
+}  // namespace
+
+PoseRefiner::PoseRefiner(std::shared_ptr<const ModelSurface> surface,
+                         RefinementParameters parameters)
+    : surface_(std::move(surface)), parameters_(parameters) {
+  if (!surface_) throw Error("the pose refiner needs a model surface");
+  checkParameters(parameters_);
+}
+
+PoseRefiner::PoseRefiner(const ModelBundle& model, RefinementParameters parameters)
+    : PoseRefiner(std::make_shared<const ModelSurface>(
+                      model.surface_points, model.surface_normals, model.bounds,
+                      model.parameters.surface_spacing, parameters.model_spacing),
+                  parameters) {}
+
+RefinementResult PoseRefiner::refine(const BinghamMixture& belief, const Eigen::Vector3d& position,
+                                     const std::vector<RefinementView>& views) const {
+  const auto start_time = std::chrono::steady_clock::now();
+  RefinementResult result;
+  const Observation observation = finitePoints(views);
+  result.skip_reason = badInputReason(observation, position, views, *surface_, parameters_);
+  if (result.skipped()) return result;
+
+  Eigen::Vector4f centroid;
+  pcl::compute3DCentroid(*observation.world, centroid);
+  const Eigen::Vector3d observed_centroid = centroid.head<3>().cast<double>();
+  const Eigen::Vector3d camera_position = observation.views.front().world_from_camera.translation();
+  const PoseVerifier verifier(surface_, thinnedViews(observation.views, parameters_.scene_voxel),
+                              parameters_.verification);
+  IcpAlignment alignment(surface_, icpSource(observation.world, parameters_.scene_voxel),
+                         {parameters_.max_iterations, parameters_.max_correspondence_distance});
+
+  for (const OrientationStart& start : orientationHypotheses(belief, parameters_.hypotheses)) {
+    RefinedPose pose;
+    pose.start_orientation =
+        start.orientation(0) < 0 ? Eigen::Vector4d(-start.orientation) : start.orientation;
+    pose.component = start.component;
+    pose.start = placedHypothesis(pose.start_orientation, position, observed_centroid,
+                                  camera_position, *surface_);
+    pose.start_score = verifier.score(pose.start);
+    const IcpOutcome icp = alignment.align(pose.start.inverse());
+    pose.world_from_object = icp.converged ? icp.object_from_world.inverse() : pose.start;
+    pose.orientation = orientationOf(pose.world_from_object);
+    pose.fitness = icp.fitness;
+    if (icp.converged) pose.score = verifier.score(pose.world_from_object);
+    pose.rejection = rejection(pose, icp, belief, parameters_);
+    pose.accepted = pose.rejection.empty();
+    result.tried.push_back(pose);
+  }
+  result.kept = keptPoses(result.tried, parameters_);
+  result.milliseconds =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_time)
+          .count();
+  return result;
+}
+
+}  // namespace vdc

@@ -1,0 +1,230 @@
+#include "view_direction_classification/refinement/pose_refiner.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <random>
+#include <sstream>
+#include <string>
+
+#include "view_direction_classification/common/error.h"
+#include "view_direction_classification/common/quaternion.h"
+#include "view_direction_classification/common/rotation_error.h"
+#include "view_direction_classification/estimation/view_measurement.h"
+#include "view_direction_classification/geometry/camera.h"
+#include "view_direction_classification/geometry/depth_renderer.h"
+#include "view_direction_classification/geometry/mug_mesh.h"
+#include "view_direction_classification/geometry/surface_sampling.h"
+
+namespace vdc {
+namespace {
+
+constexpr double kDistance = 0.6;
+
+BinghamDistribution concentratedAt(const Eigen::Vector4d& q, double concentration = 200.0) {
+  return BinghamDistribution::fromExponentMatrix(concentration * q * q.transpose());
+}
+
+Eigen::Vector4d orientationOf(const Eigen::Isometry3d& pose) {
+  return quaternionFromRotationMatrix(pose.linear());
+}
+
+// Every hypothesis' start and end: printed when an expectation fails.
+std::string describe(const RefinementResult& result, const Eigen::Vector4d& truth) {
+  std::ostringstream out;
+  for (const RefinedPose& pose : result.tried) {
+    out << "start " << rotationErrorDeg(pose.start_orientation, truth) << " deg (score "
+        << pose.start_score.score() << "), refined " << rotationErrorDeg(pose.orientation, truth)
+        << " deg (inliers " << pose.score.inlier_fraction << ", violations "
+        << pose.score.violation_fraction << "): " << (pose.accepted ? "accepted" : pose.rejection)
+        << "\n";
+  }
+  return out.str();
+}
+
+// The built-in mug standing somewhere in the fixed frame, seen by a camera from a given
+// object-frame direction and roll; its rendered, noisy view.
+class PoseRefinerTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    mesh_ = new TriangleMesh(makeMug());
+    const SurfaceSamples samples = sampleSurface(*mesh_, 0.002, 1);
+    const Eigen::AlignedBox3f box = mesh_->bounds();
+    surface_ = new std::shared_ptr<const ModelSurface>(std::make_shared<const ModelSurface>(
+        samples.points, samples.normals,
+        Eigen::AlignedBox3d(box.min().cast<double>(), box.max().cast<double>()), 0.002, 0.004));
+  }
+  static void TearDownTestSuite() {
+    delete surface_;
+    delete mesh_;
+  }
+
+  // Sets the truth and renders the view: the object at world_from_object_, the camera where it
+  // sees it from `direction` (object frame) with `roll`.
+  RefinementView view(const Eigen::Vector3d& direction, double roll, std::uint32_t seed = 3) {
+    world_from_object_ = Eigen::Isometry3d::Identity();
+    world_from_object_.linear() =
+        quaternionToRotationMatrix(quaternionFromAxisAngle(Eigen::Vector3d(0.2, -0.4, 1.0), 0.9));
+    world_from_object_.translation() = Eigen::Vector3d(0.5, -0.2, 0.75);
+    const Eigen::Isometry3d camera_from_object =
+        cameraFromObject(direction.normalized(), kDistance, roll);
+    RefinementView result;
+    result.world_from_camera = world_from_object_ * camera_from_object.inverse();
+    std::mt19937 rng(seed);
+    result.points = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>(
+        DepthRenderer(*mesh_).render(camera_from_object, DepthNoiseModel{true}, &rng));
+    return result;
+  }
+  Eigen::Vector4d truth() const { return orientationOf(world_from_object_); }
+  Eigen::Vector3d position() const { return world_from_object_.translation(); }
+  // The view's girdle (roll free) in the fixed frame.
+  BinghamMixture girdleBelief(const Eigen::Vector3d& direction, const RefinementView& v) const {
+    const BinghamMixture camera_frame({1.0}, {viewGirdle(direction.normalized(), 18.0)});
+    return cameraToFixedFrame(camera_frame, orientationOf(v.world_from_camera));
+  }
+  // The truth turned by `angle` about the camera's line of sight through the object.
+  Eigen::Vector4d turnedAboutSight(const RefinementView& v, double angle) const {
+    const Eigen::Vector3d sight = (position() - v.world_from_camera.translation()).normalized();
+    return quaternionMultiply(quaternionFromAxisAngle(sight, angle), truth());
+  }
+
+  static TriangleMesh* mesh_;
+  static std::shared_ptr<const ModelSurface>* surface_;
+  Eigen::Isometry3d world_from_object_ = Eigen::Isometry3d::Identity();
+};
+TriangleMesh* PoseRefinerTest::mesh_ = nullptr;
+std::shared_ptr<const ModelSurface>* PoseRefinerTest::surface_ = nullptr;
+
+// Handle seen from the side and above: roll is plain geometry.
+const Eigen::Vector3d kHandleSideOn(0.3, 1.0, 0.4);
+
+TEST_F(PoseRefinerTest, RecoversTheRollAlongAGirdle) {
+  // The belief knows the viewing direction and nothing about the roll (a view's girdle); the
+  // cloud fixes it.
+  const RefinementView v = view(kHandleSideOn, 2.1);
+  const PoseRefiner refiner(*surface_);
+  const RefinementResult result = refiner.refine(girdleBelief(kHandleSideOn, v), position(), {v});
+  ASSERT_FALSE(result.skipped()) << result.skip_reason;
+  EXPECT_EQ(result.tried.size(), 24u);
+  ASSERT_FALSE(result.kept.empty()) << describe(result, truth());
+  const RefinedPose& best = result.kept.front();
+  EXPECT_LT(rotationErrorDeg(best.orientation, truth()), 2.0) << describe(result, truth());
+  EXPECT_LT((best.world_from_object.translation() - position()).norm(), 0.002);
+  EXPECT_GT(best.score.score(), 0.8);
+  // Nothing else explains the view as well: one pose kept.
+  EXPECT_EQ(result.kept.size(), 1u) << describe(result, truth());
+}
+
+TEST_F(PoseRefinerTest, VerificationRejectsTheMirroredHandle) {
+  // Turned 180 degrees about the line of sight the body fits again but the handle is on the wrong
+  // side: its points are unexplained and the model's handle stands in free space.
+  const RefinementView v = view(kHandleSideOn, 0.4);
+  const Eigen::Vector4d wrong = turnedAboutSight(v, M_PI);
+  const PoseRefiner refiner(*surface_);
+  const RefinementResult alone =
+      refiner.refine(BinghamMixture({1.0}, {concentratedAt(wrong)}), position(), {v});
+  ASSERT_EQ(alone.tried.size(), 1u);
+  EXPECT_FALSE(alone.tried[0].accepted) << alone.tried[0].score.score();
+  EXPECT_TRUE(alone.kept.empty()) << describe(alone, truth());
+  // Beside the truth (lighter in the belief) it loses too.
+  const RefinementResult both =
+      refiner.refine(BinghamMixture({0.8, 0.2}, {concentratedAt(wrong), concentratedAt(truth())}),
+                     position(), {v});
+  ASSERT_EQ(both.kept.size(), 1u) << describe(both, truth());
+  EXPECT_LT(rotationErrorDeg(both.kept[0].orientation, truth()), 2.0) << describe(both, truth());
+}
+
+TEST_F(PoseRefinerTest, KeepsBothModesOfAMirrorAmbiguousView) {
+  // Seen level from the side opposite the handle, the mug is a cylinder whose half turn about the
+  // line of sight looks the same: both poses stay.
+  const Eigen::Vector3d behind(-1.0, 0.0, 0.0);
+  const RefinementView v = view(behind, 0.0);
+  const Eigen::Vector4d flipped = turnedAboutSight(v, M_PI);
+  const PoseRefiner refiner(*surface_);
+  const RefinementResult result =
+      refiner.refine(BinghamMixture({0.5, 0.5}, {concentratedAt(truth()), concentratedAt(flipped)}),
+                     position(), {v});
+  ASSERT_EQ(result.kept.size(), 2u) << describe(result, truth());
+  const double to_truth = std::min(rotationErrorDeg(result.kept[0].orientation, truth()),
+                                   rotationErrorDeg(result.kept[1].orientation, truth()));
+  const double to_flipped = std::min(rotationErrorDeg(result.kept[0].orientation, flipped),
+                                     rotationErrorDeg(result.kept[1].orientation, flipped));
+  EXPECT_LT(to_truth, 5.0);
+  EXPECT_LT(to_flipped, 5.0);
+}
+
+TEST_F(PoseRefinerTest, RefusesIcpThatDivergesOrDoesNotConverge) {
+  const RefinementView v = view(kHandleSideOn, 1.0);
+  const BinghamMixture belief({1.0}, {concentratedAt(turnedAboutSight(v, 0.3), 20.0)});
+  // It would move the pose by millimetres: with a 1 mm leash that is divergence.
+  RefinementParameters leash;
+  leash.max_translation_step = 0.001;
+  const RefinementResult diverged = PoseRefiner(*surface_, leash).refine(belief, position(), {v});
+  ASSERT_EQ(diverged.tried.size(), 1u);
+  EXPECT_FALSE(diverged.tried[0].accepted);
+  EXPECT_NE(diverged.tried[0].rejection.find("diverged"), std::string::npos)
+      << diverged.tried[0].rejection;
+  RefinementParameters hurried;
+  hurried.max_iterations = 1;
+  const RefinementResult stopped = PoseRefiner(*surface_, hurried).refine(belief, position(), {v});
+  ASSERT_EQ(stopped.tried.size(), 1u);
+  EXPECT_EQ(stopped.tried[0].rejection, "ICP did not converge");
+  EXPECT_TRUE(stopped.kept.empty());
+  // With the defaults the same start is refined and accepted.
+  const RefinementResult refined = PoseRefiner(*surface_).refine(belief, position(), {v});
+  ASSERT_EQ(refined.kept.size(), 1u) << describe(refined, truth());
+  EXPECT_LT(rotationErrorDeg(refined.kept[0].orientation, truth()), 2.0)
+      << describe(refined, truth());
+}
+
+TEST_F(PoseRefinerTest, SkipsBadInputWithAReason) {
+  const RefinementView v = view(kHandleSideOn, 1.0);
+  const BinghamMixture belief({1.0}, {concentratedAt(truth())});
+  const PoseRefiner refiner(*surface_);
+  const auto skipped = [&](const RefinementView& input, const Eigen::Vector3d& p) {
+    const RefinementResult result = refiner.refine(belief, p, {input});
+    EXPECT_TRUE(result.tried.empty());
+    return result.skip_reason;
+  };
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+
+  RefinementView few = v;
+  auto few_points = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  for (int i = 0; i < 20; ++i) few_points->push_back(pcl::PointXYZ(0.001f * i, 0.0f, 0.6f));
+  few.points = few_points;
+  EXPECT_NE(skipped(few, position()).find("only 20 finite object points"), std::string::npos);
+
+  RefinementView all_nan = v;
+  all_nan.points =
+      pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>(100, 1, pcl::PointXYZ(nan, nan, nan));
+  EXPECT_NE(skipped(all_nan, position()).find("only 0 finite"), std::string::npos);
+
+  // The mug with a wall behind it: a cloud 1 m across is not the object.
+  RefinementView too_big = v;
+  auto big = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>(*v.points);
+  for (int i = 0; i < 100; ++i) big->push_back(pcl::PointXYZ(-0.5f + 0.01f * i, 0.3f, 1.2f));
+  too_big.points = big;
+  EXPECT_NE(skipped(too_big, position()).find("span"), std::string::npos);
+
+  EXPECT_EQ(skipped(v, Eigen::Vector3d(nan, 0, 0)), "the position estimate is not finite");
+  RefinementView bad_pose = v;
+  bad_pose.world_from_camera.translation().x() = nan;
+  EXPECT_EQ(skipped(bad_pose, position()), "a camera pose is not finite");
+}
+
+TEST_F(PoseRefinerTest, RefusesInvalidParameters) {
+  RefinementParameters parameters;
+  parameters.min_points = 2;
+  EXPECT_THROW(PoseRefiner(*surface_, parameters), Error);
+  parameters = {};
+  parameters.max_correspondence_distance = 0.0;
+  EXPECT_THROW(PoseRefiner(*surface_, parameters), Error);
+  parameters = {};
+  parameters.hypotheses.girdle_step_deg = -1.0;
+  EXPECT_THROW(PoseRefiner(*surface_, parameters), Error);
+}
+
+}  // namespace
+}  // namespace vdc
