@@ -36,8 +36,12 @@ Eigen::Matrix4d quaternionRightMatrix(const Eigen::Vector4d& q) {
   return m;
 }
 
+bool isUnitQuaternion(const Eigen::Vector4d& q, double tolerance) {
+  return q.allFinite() && std::abs(q.norm() - 1.0) <= tolerance;
+}
+
 void checkUnitQuaternion(const Eigen::Vector4d& q, const char* what) {
-  if (!q.allFinite() || std::abs(q.norm() - 1.0) > 1e-6) {
+  if (!isUnitQuaternion(q)) {
     std::ostringstream message;
     message << "The quaternion " << what << " (" << q.transpose()
             << ") must be finite with unit norm, but its norm is " << q.norm() << ".";

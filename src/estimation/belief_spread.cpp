@@ -26,7 +26,7 @@ BeliefSpread beliefSpread(const BinghamMixture& belief, const Eigen::Vector4d& m
   if (samples < 10) {
     throw Error("the belief's spread needs at least 10 samples, got " + std::to_string(samples));
   }
-  if (!map.allFinite() || std::abs(map.norm() - 1.0) > 1e-6) {
+  if (!isUnitQuaternion(map)) {
     throw Error("the belief's spread needs a unit MAP quaternion");
   }
   std::mt19937_64 generator(seed);

@@ -30,7 +30,7 @@ Eigen::Isometry3d toIsometry(const geometry_msgs::TransformStamped& transform) {
   const auto& r = transform.transform.rotation;
   const Eigen::Vector3d translation(t.x, t.y, t.z);
   const Eigen::Vector4d rotation(r.w, r.x, r.y, r.z);
-  if (!translation.allFinite() || !rotation.allFinite() || std::abs(rotation.norm() - 1.0) > 1e-6) {
+  if (!translation.allFinite() || !isUnitQuaternion(rotation)) {
     std::ostringstream message;
     message << "The transform from '" << transform.child_frame_id << "' to '"
             << transform.header.frame_id << "' is not a rigid motion (translation "

@@ -37,6 +37,22 @@ TEST(Quaternion, RotationMatrixRoundTripAndVectorRotation) {
   EXPECT_NEAR(std::abs(back.dot(q)), 1.0, 1e-12);
 }
 
+TEST(Quaternion, IsUnitQuaternionAcceptsNormsWithinTheToleranceOnly) {
+  const Eigen::Vector4d q = Eigen::Vector4d(1, 2, 3, 4).normalized();
+  EXPECT_TRUE(isUnitQuaternion(q));
+  EXPECT_TRUE(isUnitQuaternion((1.0 + 0.9e-6) * q));
+  EXPECT_FALSE(isUnitQuaternion((1.0 + 1.1e-6) * q));
+  EXPECT_FALSE(isUnitQuaternion((1.0 - 1.1e-6) * q));
+  // A request's looser tolerance: four typed decimals pass, a wrong component does not.
+  const Eigen::Vector4d typed(0.7071, 0, 0, 0.7071);
+  EXPECT_FALSE(isUnitQuaternion(typed));
+  EXPECT_TRUE(isUnitQuaternion(typed, kRequestQuaternionTolerance));
+  EXPECT_FALSE(
+      isUnitQuaternion(Eigen::Vector4d(0.7071, 0, 0.1, 0.7071), kRequestQuaternionTolerance));
+  EXPECT_FALSE(isUnitQuaternion(Eigen::Vector4d(NAN, 0, 0, 0), kRequestQuaternionTolerance));
+  EXPECT_FALSE(isUnitQuaternion(Eigen::Vector4d(INFINITY, 0, 0, 0), 1e300));
+}
+
 TEST(Quaternion, RejectsNonUnitAndNonFiniteInput) {
   EXPECT_THROW(toEigenQuaternion(Eigen::Vector4d(1, 1, 0, 0)), Error);
   EXPECT_THROW(checkUnitQuaternion(Eigen::Vector4d(NAN, 0, 0, 0), "q"), Error);

@@ -37,7 +37,16 @@ Eigen::Vector4d quaternionFromAxisAngle(const Eigen::Vector3d& axis, double angl
 // Rotates the vector v by the unit quaternion q.
 Eigen::Vector3d rotateVector(const Eigen::Vector4d& q, const Eigen::Vector3d& v);
 
-// Throws vdc::Error naming `what` unless q is finite with norm 1 (tolerance 1e-6).
+// The one unit-quaternion test of the package, core and ROS shell alike. Two tolerances on |q|:
+// the core's, which its own arithmetic keeps, and a request's, for poses a user types into a
+// service call with three or four decimals (the caller normalises what it accepts).
+constexpr double kUnitQuaternionTolerance = 1e-6;
+constexpr double kRequestQuaternionTolerance = 1e-3;
+
+// Whether q is finite with | |q| - 1 | <= tolerance.
+bool isUnitQuaternion(const Eigen::Vector4d& q, double tolerance = kUnitQuaternionTolerance);
+
+// Throws vdc::Error naming `what` unless isUnitQuaternion(q).
 void checkUnitQuaternion(const Eigen::Vector4d& q, const char* what);
 
 }  // namespace vdc
