@@ -114,9 +114,11 @@ InformativenessServerRos::InformativenessServerRos(ros::NodeHandle node,
       "next_best_view", &InformativenessServerRos::nextBestView, this);
   estimate_subscriber_ =
       node_.subscribe("estimate", 1, &InformativenessServerRos::receiveEstimate, this);
-  ROS_INFO("Informativeness server: model %s (%d views, %zu surface points), object frame %s in %s",
-           parameters_.model_path.c_str(), scorer_->viewCount(), model_->surface_points.size(),
-           parameters_.object_frame.c_str(), parameters_.fixed_frame.c_str());
+  ROS_INFO_NAMED(
+      private_node_.getNamespace(),
+      "Informativeness server: model %s (%d views, %zu surface points), object frame %s in %s",
+      parameters_.model_path.c_str(), scorer_->viewCount(), model_->surface_points.size(),
+      parameters_.object_frame.c_str(), parameters_.fixed_frame.c_str());
 }
 
 void InformativenessServerRos::publishScoreTopics() {
@@ -178,7 +180,8 @@ void InformativenessServerRos::receiveEstimate(
     latest_belief_ = std::move(belief);
     latest_map_ = map;
   } catch (const std::exception& error) {
-    ROS_WARN_THROTTLE(5.0, "Ignoring an estimate: %s", error.what());
+    ROS_WARN_THROTTLE_NAMED(5.0, private_node_.getNamespace(), "Ignoring an estimate: %s",
+                            error.what());
   }
 }
 

@@ -58,7 +58,10 @@ class InformativenessServerRos {
   std::shared_ptr<const ModelBundle> model_;
   std::unique_ptr<ViewUtilityScorer> scorer_;
 
-  std::mutex belief_mutex_;  // the estimate callback and the services may run concurrently
+  // Guards the belief between the estimate callback and the services. They run one at a time
+  // (ros::spin() in the node; the nodelet's single-threaded queue on a manager worker thread);
+  // the lock keeps that true on a multi-threaded spinner.
+  std::mutex belief_mutex_;
   std::optional<BinghamMixture> latest_belief_;
   Eigen::Vector4d latest_map_ = Eigen::Vector4d(1, 0, 0, 0);
 

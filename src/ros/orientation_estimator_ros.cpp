@@ -5,6 +5,8 @@
 #include <view_direction_classification/BinghamMixture.h>
 #include <visualization_msgs/MarkerArray.h>
 
+#include <boost/make_shared.hpp>
+
 #include <chrono>
 #include <exception>
 #include <random>
@@ -63,10 +65,12 @@ OrientationEstimatorRos::OrientationEstimatorRos(ros::NodeHandle node, ros::Node
   worker_ = std::thread(&OrientationEstimatorRos::workerLoop, this);
   // Queue of one: the worker only ever wants the newest cloud.
   cloud_subscriber_ = node_.subscribe("cloud", 1, &OrientationEstimatorRos::cloudCallback, this);
-  ROS_INFO("%s: model %s (%d viewing directions, kappa %.1f), fixed frame '%s', listening on %s",
-           private_node_.getNamespace().c_str(), parameters_.model_path.c_str(),
-           static_cast<int>(estimator_->model().view_directions.size()), estimator_->kappa(),
-           parameters_.fixed_frame.c_str(), cloud_subscriber_.getTopic().c_str());
+  ROS_INFO_NAMED(
+      private_node_.getNamespace(),
+      "%s: model %s (%d viewing directions, kappa %.1f), fixed frame '%s', listening on %s",
+      private_node_.getNamespace().c_str(), parameters_.model_path.c_str(),
+      static_cast<int>(estimator_->model().view_directions.size()), estimator_->kappa(),
+      parameters_.fixed_frame.c_str(), cloud_subscriber_.getTopic().c_str());
 }
 
 OrientationEstimatorRos::~OrientationEstimatorRos() {
@@ -196,23 +200,26 @@ void OrientationEstimatorRos::publishEstimate(const std_msgs::Header& cloud_head
   header.frame_id = parameters_.fixed_frame;
   const Eigen::Vector4d map = estimator_->mapOrientation();
 
-  BinghamMixtureMsg estimate = toBinghamMixtureMsg(estimator_->belief());
-  estimate.header = header;
-  estimate.object_id = parameters_.object_id;
-  estimate.map_orientation = toQuaternionMsg(map);
-  estimate.entropy = estimator_->entropy();
+  // Published as shared pointers, never touched after: a server nodelet in the same manager
+  // gets this object without a copy.
+  const auto estimate =
+      boost::make_shared<BinghamMixtureMsg>(toBinghamMixtureMsg(estimator_->belief()));
+  estimate->header = header;
+  estimate->object_id = parameters_.object_id;
+  estimate->map_orientation = toQuaternionMsg(map);
+  estimate->entropy = estimator_->entropy();
   // The cone and ~pose's covariance come from the same belief samples (BeliefSpread).
-  estimate.views_fused = static_cast<std::uint32_t>(estimator_->viewsFused());
-  estimate.cone90_deg = estimator_->spread().cone90 * 180.0 / M_PI;
-  estimate.converged = estimate.cone90_deg <= parameters_.converged_cone90_deg;
+  estimate->views_fused = static_cast<std::uint32_t>(estimator_->viewsFused());
+  estimate->cone90_deg = estimator_->spread().cone90 * 180.0 / M_PI;
+  estimate->converged = estimate->cone90_deg <= parameters_.converged_cone90_deg;
   estimate_publisher_.publish(estimate);
 
   const std::optional<Eigen::Vector3d> position = estimator_->positionEstimate();
   if (!position) return;  // cannot happen after a fused view; nothing to place the pose at
-  geometry_msgs::PoseWithCovarianceStamped pose;
-  pose.header = header;
-  pose.pose = toPoseWithCovarianceMsg(*position, map, parameters_.position_variance,
-                                      estimator_->orientationCovariance());
+  const auto pose = boost::make_shared<geometry_msgs::PoseWithCovarianceStamped>();
+  pose->header = header;
+  pose->pose = toPoseWithCovarianceMsg(*position, map, parameters_.position_variance,
+                                       estimator_->orientationCovariance());
   pose_publisher_.publish(pose);
 
   // Sampling costs time; rviz may not be listening (image_proc's habit: work only for listeners).
@@ -256,8 +263,8 @@ void OrientationEstimatorRos::skip(const std::string& reason) {
     ++skipped_;
     last_skip_reason_ = reason;
   }
-  ROS_WARN_THROTTLE(2.0, "%s: skipped a cloud: %s", private_node_.getNamespace().c_str(),
-                    reason.c_str());
+  ROS_WARN_THROTTLE_NAMED(2.0, private_node_.getNamespace(), "%s: skipped a cloud: %s",
+                          private_node_.getNamespace().c_str(), reason.c_str());
 }
 
 bool OrientationEstimatorRos::resetService(std_srvs::Trigger::Request&,
@@ -287,7 +294,8 @@ void OrientationEstimatorRos::announceReset(const std::string& why) {
     std::lock_guard<std::mutex> lock(object_transform_mutex_);
     object_transform_.reset();
   }
-  ROS_INFO("%s: belief reset: %s", private_node_.getNamespace().c_str(), why.c_str());
+  ROS_INFO_NAMED(private_node_.getNamespace(), "%s: belief reset: %s",
+                 private_node_.getNamespace().c_str(), why.c_str());
   std_msgs::Header header;
   header.stamp = ros::Time::now();
   header.frame_id = parameters_.fixed_frame;

@@ -34,6 +34,13 @@ namespace vdc {
 // cloud, and one worker thread processes whatever is newest when it is free (the clouds it never
 // saw are counted as skipped). Bad clouds are logged (throttled) and skipped; nothing a message
 // contains ends the node.
+//
+// Threads: the cloud callback, the two timers and ~reset are callbacks of one node handle's
+// queue and run one at a time, on ros::spin()'s thread in the node and on one of the manager's
+// worker threads in the nodelet (its getNodeHandle() queue is single-threaded); the worker
+// thread runs beside them, and the mutexes guard what it shares with them. tf2's listener
+// fills the buffer from a thread of its own. Log lines go to the logger named after the node or
+// nodelet (ROS_*_NAMED with the private namespace, which is what NODELET_* uses).
 class OrientationEstimatorRos {
  public:
   // Throws vdc::Error (or another std::exception) for invalid parameters or an unreadable model:

@@ -233,8 +233,9 @@ void ParameterReader::warnAboutUnknownParameters(const std::vector<std::string>&
   if (unknown.empty()) return;
   std::string names;
   for (const std::string& name : unknown) names += (names.empty() ? "~" : ", ~") + name;
-  ROS_WARN("%s: ignoring parameters this node does not read (misspelt?): %s",
-           node_.getNamespace().c_str(), names.c_str());
+  ROS_WARN_NAMED(node_.getNamespace(),
+                 "%s: ignoring parameters this node does not read (misspelt?): %s",
+                 node_.getNamespace().c_str(), names.c_str());
 }
 
 }  // namespace vdc

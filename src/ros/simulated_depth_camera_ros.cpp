@@ -5,6 +5,8 @@
 #include <sensor_msgs/PointCloud2.h>
 #include <tf2_eigen/tf2_eigen.h>
 
+#include <boost/make_shared.hpp>
+
 #include <cmath>
 #include <string>
 #include <utility>
@@ -78,7 +80,8 @@ SimulatedDepthCameraRos::SimulatedDepthCameraRos(ros::NodeHandle node, ros::Node
   move_service_ = private_node_.advertiseService("move_to", &SimulatedDepthCameraRos::moveTo, this);
   timer_ =
       node_.createTimer(ros::Duration(1.0 / p.rate), &SimulatedDepthCameraRos::publishView, this);
-  ROS_INFO(
+  ROS_INFO_NAMED(
+      private_node_.getNamespace(),
       "Simulated depth camera: mesh %s%s, %zu distractors, %s -> %s at %.1f Hz, noise %s, "
       "visibility crop %s",
       p.mesh.c_str(), scene.table_size ? " on a table" : "", distractors.size(),
@@ -109,10 +112,14 @@ void SimulatedDepthCameraRos::publishView(const ros::TimerEvent&) {
     const Eigen::Isometry3d camera_from_object = camera_from_world * world_from_object_;
     cloud = cropToAnchors(cloud, camera_from_object, visibility_anchors_, visibility_radius_);
   }
-  sensor_msgs::PointCloud2 msg;
-  pcl::toROSMsg(cloud, msg);
-  msg.header.stamp = stamp;
-  msg.header.frame_id = camera_frame_;
+  // A fresh message for every frame, handed over as a shared pointer and never touched again:
+  // a subscriber in the same nodelet manager receives this very object (no serialisation, no
+  // copy); published by reference, roscpp would serialise it and every in-process subscriber
+  // would get a deserialised copy of ~3.7 MB.
+  const sensor_msgs::PointCloud2Ptr msg = boost::make_shared<sensor_msgs::PointCloud2>();
+  pcl::toROSMsg(cloud, *msg);
+  msg->header.stamp = stamp;
+  msg->header.frame_id = camera_frame_;
   cloud_publisher_.publish(msg);
 }
 

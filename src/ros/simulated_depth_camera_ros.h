@@ -24,6 +24,12 @@ namespace vdc {
 // the camera's optical frame at `rate`, with the camera's tf (fixed_frame -> camera_frame) at the
 // same stamp, and optionally the object's ground-truth tf for evaluation. `~move_to` moves it.
 // Parameters are documented in config/simulated_depth_camera.yaml.
+//
+// Each cloud is a new message published as a shared pointer: in a nodelet manager, the
+// estimator's nodelet gets the very object rendered here, without serialisation or a copy.
+// Threads: the timer and ~move_to are callbacks of one node handle's queue, run one at a time: on
+// ros::spin()'s thread in the node, on one of the manager's worker threads in the nodelet (a
+// nodelet's getNodeHandle() queue is single-threaded); rendering a frame delays a move.
 class SimulatedDepthCameraRos {
  public:
   // Throws vdc::Error (or std::exception) for invalid parameters or an unreadable mesh.
@@ -44,7 +50,9 @@ class SimulatedDepthCameraRos {
   double visibility_radius_ = 0.0;  // <= 0: no crop
   std::vector<Eigen::Vector3d> visibility_anchors_;
 
-  std::mutex mutex_;  // guards world_from_camera_ (the timer and the service may run concurrently)
+  // Guards world_from_camera_ between the timer and ~move_to. They do not overlap on the
+  // single-threaded queues above; the lock keeps that true on a multi-threaded spinner.
+  std::mutex mutex_;
   Eigen::Isometry3d world_from_camera_ = Eigen::Isometry3d::Identity();
 
   ros::Publisher cloud_publisher_;
