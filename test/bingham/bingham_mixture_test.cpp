@@ -1,4 +1,5 @@
 #include "view_direction_classification/bingham/bingham_mixture.h"
+#include "support/random_unit_quaternions.h"
 #include "view_direction_classification/bingham/bingham.h"
 #include "view_direction_classification/common/error.h"
 #include "view_direction_classification/common/quaternion.h"
@@ -133,12 +134,11 @@ TEST(BinghamMixture, TwoGirdlesFromDifferentDirectionsFuseAtTheirIntersection) {
 // Many random concentrated components, so most pairwise products are negligible.
 BinghamMixture randomConcentratedMixture(int count, double concentration, unsigned seed) {
   std::mt19937 rng(seed);
-  std::normal_distribution<double> gaussian;
+  const std::vector<Eigen::Vector4d> modes = test::randomUnitQuaternions(count, rng);
   std::vector<double> weights;
   std::vector<BinghamDistribution> components;
   for (int k = 0; k < count; ++k) {
-    const Eigen::Vector4d q =
-        Eigen::Vector4d(gaussian(rng), gaussian(rng), gaussian(rng), gaussian(rng)).normalized();
+    const Eigen::Vector4d& q = modes[static_cast<std::size_t>(k)];
     components.push_back(centredOn(q, Eigen::Vector3d(-concentration, -concentration,
                                                       -concentration * (k % 3 == 0 ? 0.01 : 1))));
     weights.push_back(1.0 + k % 5);
@@ -225,12 +225,7 @@ TEST(BinghamMixture, MapIsAtLeastAsGoodAsTheBestOfManyRandomPoints) {
                                 centredOn(rotationAbout(0, 1, 0, 45), {-20, -2, 0}),
                                 centredOn(rotationAbout(0, 0, 1, -60), {-6, -6, -6})});
   const double at_map = mixture.logDensity(mapEstimate(mixture));
-  std::mt19937_64 generator(3);
-  std::normal_distribution<double> normal;
-  for (int i = 0; i < 20000; ++i) {
-    const Eigen::Vector4d x =
-        Eigen::Vector4d(normal(generator), normal(generator), normal(generator), normal(generator))
-            .normalized();
+  for (const Eigen::Vector4d& x : test::randomUnitQuaternionsFromSeed(20000, 3)) {
     ASSERT_LE(mixture.logDensity(x), at_map + 1e-9);
   }
 }

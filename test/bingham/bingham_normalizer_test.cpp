@@ -1,4 +1,5 @@
 #include "view_direction_classification/bingham/bingham_normalizer.h"
+#include "support/random_unit_quaternions.h"
 #include "view_direction_classification/common/error.h"
 
 #include <gtest/gtest.h>
@@ -51,15 +52,9 @@ TEST(BinghamNormalizer, MatchesTheReferenceSeriesValues) {
 }
 
 TEST(BinghamNormalizer, AgreesWithMonteCarloIntegrationOverTheSphere) {
-  std::mt19937_64 generator(7);
-  std::normal_distribution<double> normal;
   const std::vector<Eigen::Vector3d> cases{{-2, -1, -0.5}, {-8, -3, 0}, {-30, -0.1, -0.1}};
   const int samples = 200000;
-  std::vector<Eigen::Vector4d> points(samples);
-  for (Eigen::Vector4d& x : points) {
-    x = Eigen::Vector4d(normal(generator), normal(generator), normal(generator), normal(generator))
-            .normalized();
-  }
+  const std::vector<Eigen::Vector4d> points = test::randomUnitQuaternionsFromSeed(samples, 7);
   for (const Eigen::Vector3d& z : cases) {
     double sum = 0.0, sum_squares = 0.0;
     for (const Eigen::Vector4d& x : points) {

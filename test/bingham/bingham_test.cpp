@@ -1,4 +1,5 @@
 #include "view_direction_classification/bingham/bingham.h"
+#include "support/random_unit_quaternions.h"
 #include "view_direction_classification/common/error.h"
 #include "view_direction_classification/common/quaternion.h"
 
@@ -26,18 +27,6 @@ Eigen::Matrix4d randomBasis(unsigned seed) {
 
 BinghamDistribution makeDistribution(const Eigen::Vector3d& z, unsigned seed) {
   return BinghamDistribution(z, randomBasis(seed).leftCols<3>());
-}
-
-// Uniform points on S^3 (fixed seed) for integrating by Monte Carlo: E_uniform[f] * 2 pi^2.
-std::vector<Eigen::Vector4d> uniformPoints(int count, unsigned seed) {
-  std::mt19937_64 generator(seed);
-  std::normal_distribution<double> normal;
-  std::vector<Eigen::Vector4d> points(count);
-  for (Eigen::Vector4d& x : points) {
-    x = Eigen::Vector4d(normal(generator), normal(generator), normal(generator), normal(generator))
-            .normalized();
-  }
-  return points;
 }
 
 TEST(Bingham, DefaultIsUniform) {
@@ -79,7 +68,7 @@ TEST(Bingham, RejectsPositiveOrNonFiniteConcentrationsAndNonOrthonormalAxes) {
 
 TEST(Bingham, DensityIntegratesToOneAndScatterMatchesMonteCarlo) {
   const BinghamDistribution b = makeDistribution(Eigen::Vector3d(-6, -2, -0.5), 5);
-  const std::vector<Eigen::Vector4d> points = uniformPoints(200000, 11);
+  const std::vector<Eigen::Vector4d> points = test::randomUnitQuaternionsFromSeed(200000, 11);
   double mass = 0.0;
   Eigen::Matrix4d scatter = Eigen::Matrix4d::Zero();
   for (const Eigen::Vector4d& x : points) {
@@ -115,7 +104,7 @@ TEST(Bingham, KlDivergenceIsZeroForItselfAndPositiveOtherwise) {
   EXPECT_GT(klDivergence(p, q), 0.1);
   // Against Monte Carlo: E_p[log p - log q] with importance weights from uniform samples.
   double kl = 0.0;
-  const std::vector<Eigen::Vector4d> points = uniformPoints(200000, 12);
+  const std::vector<Eigen::Vector4d> points = test::randomUnitQuaternionsFromSeed(200000, 12);
   for (const Eigen::Vector4d& x : points) {
     kl += p.density(x) * (p.logDensity(x) - q.logDensity(x)) * kTwoPiSquared / points.size();
   }
@@ -126,7 +115,7 @@ TEST(Bingham, RotatedDensityAtRotatedPointEqualsOriginal) {
   const BinghamDistribution b = makeDistribution(Eigen::Vector3d(-30, -4, -1), 8);
   const Eigen::Vector4d q = quaternionFromAxisAngle(Eigen::Vector3d(1, 2, -1), 0.9);
   const BinghamDistribution r = b.rotated(q);
-  for (const Eigen::Vector4d& x : uniformPoints(20, 13)) {
+  for (const Eigen::Vector4d& x : test::randomUnitQuaternionsFromSeed(20, 13)) {
     EXPECT_NEAR(r.logDensity(quaternionMultiply(q, x)), b.logDensity(x), 1e-10);
   }
   EXPECT_NEAR(std::abs(r.mode().dot(quaternionMultiply(q, b.mode()))), 1.0, 1e-12);
@@ -138,7 +127,7 @@ TEST(Bingham, ProductAddsExponentsAndItsScaleIsTheOverlapIntegral) {
   const BinghamDistribution a = makeDistribution(Eigen::Vector3d(-8, -3, -1), 9);
   const BinghamDistribution b = makeDistribution(Eigen::Vector3d(-5, -5, -0.2), 10);
   const BinghamProduct product = multiply(a, b);
-  const std::vector<Eigen::Vector4d> points = uniformPoints(200000, 14);
+  const std::vector<Eigen::Vector4d> points = test::randomUnitQuaternionsFromSeed(200000, 14);
   double overlap = 0.0;
   for (const Eigen::Vector4d& x : points) {
     overlap += a.density(x) * b.density(x) * kTwoPiSquared / points.size();

@@ -1,4 +1,5 @@
 #include "view_direction_classification/estimation/orientation_filter.h"
+#include "support/random_unit_quaternions.h"
 #include "view_direction_classification/common/quaternion.h"
 #include "view_direction_classification/common/rotation_error.h"
 #include "view_direction_classification/estimation/view_measurement.h"
@@ -34,12 +35,6 @@ double meanNeighbourAngle(const std::vector<Eigen::Vector3d>& directions) {
     sum += nearest;
   }
   return sum / directions.size();
-}
-
-Eigen::Vector4d randomRotation(std::mt19937_64& generator) {
-  std::normal_distribution<double> normal;
-  return Eigen::Vector4d(normal(generator), normal(generator), normal(generator), normal(generator))
-      .normalized();
 }
 
 // A simulated view of an object at q_WO from a camera at q_WC: the classifier's p_sum is a soft
@@ -113,11 +108,11 @@ TEST(OrientationFilter, ConvergesFromRollAmbiguousViewsAroundAKnownOrientation) 
   const SimulatedViews views;
   std::mt19937_64 generator(2024);
   for (int trial = 0; trial < 2; ++trial) {
-    const Eigen::Vector4d q_WO = randomRotation(generator);
+    const Eigen::Vector4d q_WO = test::randomUnitQuaternion(generator);
     OrientationFilter filter;
     double first_error = 0.0;
     for (int view = 0; view < 10; ++view) {
-      filter.update(views.measure(q_WO, randomRotation(generator), 0.0, generator));
+      filter.update(views.measure(q_WO, test::randomUnitQuaternion(generator), 0.0, generator));
       if (view == 0) first_error = rotationErrorDeg(filter.mapEstimate(), q_WO);
     }
     const double final_error = rotationErrorDeg(filter.mapEstimate(), q_WO);
@@ -131,10 +126,10 @@ TEST(OrientationFilter, ConvergesFromRollAmbiguousViewsAroundAKnownOrientation) 
 TEST(OrientationFilter, ConvergesDespiteAThirdOfEveryViewsMassOnAWrongDirection) {
   const SimulatedViews views;
   std::mt19937_64 generator(77);
-  const Eigen::Vector4d q_WO = randomRotation(generator);
+  const Eigen::Vector4d q_WO = test::randomUnitQuaternion(generator);
   OrientationFilter filter;
   for (int view = 0; view < 10; ++view) {
-    filter.update(views.measure(q_WO, randomRotation(generator), 0.33, generator));
+    filter.update(views.measure(q_WO, test::randomUnitQuaternion(generator), 0.33, generator));
     EXPECT_LE(filter.belief().size(), 200u);
   }
   EXPECT_LT(rotationErrorDeg(filter.mapEstimate(), q_WO), 12.0);
