@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <memory>
+#include <string>
 
 #include "view_direction_classification/common/error.h"
 
@@ -17,17 +18,29 @@ RgbImage::RgbImage(int w, int h, const Rgb& fill) : width(w), height(h) {
   }
 }
 
+namespace {
+
+// The offset of pixel (x, y)'s red byte; throws vdc::Error for a pixel outside the image, which
+// would otherwise read or write another row's pixel or past the buffer.
+std::size_t pixelOffset(const RgbImage& image, int x, int y) {
+  if (x < 0 || y < 0 || x >= image.width || y >= image.height) {
+    throw Error("pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") is outside the " +
+                std::to_string(image.width) + " x " + std::to_string(image.height) + " image");
+  }
+  return (static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) +
+          static_cast<std::size_t>(x)) *
+         3;
+}
+
+}  // namespace
+
 Rgb RgbImage::at(int x, int y) const {
-  const std::size_t i = (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
-                         static_cast<std::size_t>(x)) *
-                        3;
+  const std::size_t i = pixelOffset(*this, x, y);
   return {pixels[i], pixels[i + 1], pixels[i + 2]};
 }
 
 void RgbImage::set(int x, int y, const Rgb& colour) {
-  const std::size_t i = (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
-                         static_cast<std::size_t>(x)) *
-                        3;
+  const std::size_t i = pixelOffset(*this, x, y);
   pixels[i] = colour[0], pixels[i + 1] = colour[1], pixels[i + 2] = colour[2];
 }
 
