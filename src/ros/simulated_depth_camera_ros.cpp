@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "view_direction_classification/common/error.h"
+#include "view_direction_classification/common/quaternion.h"
 #include "view_direction_classification/geometry/camera.h"
 #include "view_direction_classification/geometry/mesh_io.h"
 #include "view_direction_classification/geometry/mug_mesh.h"
@@ -135,7 +136,7 @@ bool SimulatedDepthCameraRos::moveTo(
       const Eigen::Vector3d position(p.x, p.y, p.z);
       const Eigen::Quaterniond rotation(q.w, q.x, q.y, q.z);
       if (!position.allFinite()) throw Error("The camera position is not finite.");
-      if (!rotation.coeffs().allFinite() || std::abs(rotation.norm() - 1.0) > 1e-3) {
+      if (!isUnitQuaternion(Eigen::Vector4d(q.w, q.x, q.y, q.z), kRequestQuaternionTolerance)) {
         throw Error("The camera orientation is not a unit quaternion (norm " +
                     std::to_string(rotation.norm()) + ").");
       }
