@@ -1,23 +1,13 @@
 #include "informativeness_server_ros.h"
 
-#include <geometry_msgs/PoseStamped.h>
-#include <pcl/point_cloud.h>
-#include <pcl/point_types.h>
-#include <pcl_conversions/pcl_conversions.h>
 #include <sensor_msgs/PointCloud2.h>
 #include <tf2_eigen/tf2_eigen.h>
 #include <visualization_msgs/MarkerArray.h>
 
-#include <cmath>
 #include <cstdio>
 #include <string>
-#include <utility>
-#include <vector>
 
 #include "view_direction_classification/common/error.h"
-#include "view_direction_classification/common/quaternion.h"
-#include "view_direction_classification/ros/bingham_conversions.h"
-#include "view_direction_classification/ros/cloud_conversions.h"
 #include "view_direction_classification/ros/geometry_conversions.h"
 #include "view_direction_classification/visualisation/heatmap_colours.h"
 
@@ -36,52 +26,6 @@ std_msgs::ColorRGBA toColour(const std::array<std::uint8_t, 3>& rgb) {
   return colour;
 }
 
-// The surface set coloured by `scores` on the paper's scale, black at `black_at`.
-sensor_msgs::PointCloud2 colouredSurface(const ModelBundle& model, const Eigen::VectorXf& scores,
-                                         double black_at, const std::string& frame) {
-  pcl::PointCloud<pcl::PointXYZRGB> cloud;
-  cloud.reserve(model.surface_points.size());
-  for (std::size_t i = 0; i < model.surface_points.size(); ++i) {
-    const auto rgb = heatmapColour(scores(static_cast<Eigen::Index>(i)), black_at);
-    pcl::PointXYZRGB point(rgb[0], rgb[1], rgb[2]);
-    point.x = model.surface_points[i].x();
-    point.y = model.surface_points[i].y();
-    point.z = model.surface_points[i].z();
-    cloud.push_back(point);
-  }
-  sensor_msgs::PointCloud2 msg;
-  pcl::toROSMsg(cloud, msg);
-  msg.header.frame_id = frame;
-  msg.header.stamp = ros::Time(0);  // static in the object frame: rviz uses the latest tf
-  return msg;
-}
-
-double minimumOfValid(const Eigen::VectorXf& values) {
-  double minimum = 0.0;
-  bool any = false;
-  for (Eigen::Index i = 0; i < values.size(); ++i) {
-    if (!(values(i) >= 0.0f)) continue;
-    minimum = any ? std::min(minimum, double(values(i))) : double(values(i));
-    any = true;
-  }
-  return minimum;
-}
-
-geometry_msgs::Pose toPoseMsg(const Eigen::Isometry3d& pose) { return tf2::toMsg(pose); }
-
-Eigen::Isometry3d fromPoseMsg(const geometry_msgs::Pose& msg, std::size_t index) {
-  const Eigen::Vector3d position(msg.position.x, msg.position.y, msg.position.z);
-  const Eigen::Vector4d rotation(msg.orientation.w, msg.orientation.x, msg.orientation.y,
-                                 msg.orientation.z);
-  if (!position.allFinite() || !rotation.allFinite() || std::abs(rotation.norm() - 1.0) > 1e-3) {
-    throw Error("Candidate pose " + std::to_string(index) +
-                " has a non-finite position or a non-unit orientation.");
-  }
-  Eigen::Isometry3d pose;
-  tf2::fromMsg(msg, pose);
-  return pose;
-}
-
 }  // namespace
 
 InformativenessServerRos::InformativenessServerRos(ros::NodeHandle node,
@@ -90,8 +34,9 @@ InformativenessServerRos::InformativenessServerRos(ros::NodeHandle node,
       private_node_(private_node),
       parameters_(readInformativenessServerRosParameters(private_node)),
       tf_listener_(tf_buffer_) {
-  model_ = std::make_shared<const ModelBundle>(loadModelBundle(parameters_.model_path));
-  scorer_ = std::make_unique<ViewUtilityScorer>(model_);
+  requests_ = std::make_unique<InformativenessServerRequests>(
+      std::make_shared<const ModelBundle>(loadModelBundle(parameters_.model_path)), parameters_,
+      [this](const std::string& frame, const char* what) { return lookupFixedFrom(frame, what); });
 
   heatmap_publisher_ = private_node_.advertise<sensor_msgs::PointCloud2>("heatmap", 1, true);
   view_scores_publisher_ =
@@ -117,18 +62,20 @@ InformativenessServerRos::InformativenessServerRos(ros::NodeHandle node,
   ROS_INFO_NAMED(
       private_node_.getNamespace(),
       "Informativeness server: model %s (%d views, %zu surface points), object frame %s in %s",
-      parameters_.model_path.c_str(), scorer_->viewCount(), model_->surface_points.size(),
-      parameters_.object_frame.c_str(), parameters_.fixed_frame.c_str());
+      parameters_.model_path.c_str(), requests_->scorer().viewCount(),
+      requests_->model().surface_points.size(), parameters_.object_frame.c_str(),
+      parameters_.fixed_frame.c_str());
 }
 
 void InformativenessServerRos::publishScoreTopics() {
-  const Eigen::VectorXf& g = model_->global_scores;
-  heatmap_msg_ = colouredSurface(*model_, g, medianOfValid(g), parameters_.object_frame);
+  const ModelBundle& model = requests_->model();
+  const Eigen::VectorXf& g = model.global_scores;
+  heatmap_msg_ = colouredSurface(model, g, medianOfValid(g), parameters_.object_frame);
   heatmap_publisher_.publish(heatmap_msg_);
 
   // One sphere per training direction on a sphere around the object, coloured by its view score
   // on the same scale (white = most informative), and text labels on the best ones.
-  const auto& informativeness = model_->view_informativeness;
+  const auto& informativeness = model.view_informativeness;
   const Eigen::VectorXf view_scores = informativeness.view_scores.cast<float>();
   const double black_at = medianOfValid(view_scores);
   visualization_msgs::MarkerArray markers;
@@ -139,10 +86,10 @@ void InformativenessServerRos::publishScoreTopics() {
   sphere.action = visualization_msgs::Marker::ADD;
   sphere.pose.orientation.w = 1.0;
   sphere.scale.x = sphere.scale.y = sphere.scale.z = 0.015;
-  for (int m = 0; m < scorer_->viewCount(); ++m) {
+  for (int m = 0; m < requests_->scorer().viewCount(); ++m) {
     sphere.id = m;
-    sphere.pose.position = tf2::toMsg(Eigen::Vector3d(parameters_.view_marker_distance *
-                                                      model_->view_directions[m].normalized()));
+    sphere.pose.position = tf2::toMsg(
+        Eigen::Vector3d(parameters_.view_marker_distance * model.view_directions[m].normalized()));
     sphere.color = toColour(heatmapColour(view_scores(m), black_at));
     markers.markers.push_back(sphere);
   }
@@ -160,7 +107,7 @@ void InformativenessServerRos::publishScoreTopics() {
     label.id = rank;
     label.text = text;
     label.pose.position = tf2::toMsg(Eigen::Vector3d((parameters_.view_marker_distance + 0.02) *
-                                                     model_->view_directions[m].normalized()));
+                                                     model.view_directions[m].normalized()));
     markers.markers.push_back(label);
   }
   view_scores_msg_ = markers;
@@ -170,15 +117,7 @@ void InformativenessServerRos::publishScoreTopics() {
 void InformativenessServerRos::receiveEstimate(
     const view_direction_classification::BinghamMixture::ConstPtr& msg) {
   try {
-    if (!msg->header.frame_id.empty() && msg->header.frame_id != parameters_.fixed_frame) {
-      throw Error("it is in frame '" + msg->header.frame_id + "', not the fixed frame '" +
-                  parameters_.fixed_frame + "'");
-    }
-    BinghamMixture belief = fromBinghamMixtureMsg(*msg);
-    const Eigen::Vector4d map = mapEstimate(belief);
-    std::lock_guard<std::mutex> lock(belief_mutex_);
-    latest_belief_ = std::move(belief);
-    latest_map_ = map;
+    requests_->receiveEstimate(*msg);
   } catch (const std::exception& error) {
     ROS_WARN_THROTTLE_NAMED(5.0, private_node_.getNamespace(), "Ignoring an estimate: %s",
                             error.what());
@@ -187,7 +126,6 @@ void InformativenessServerRos::receiveEstimate(
 
 Eigen::Isometry3d InformativenessServerRos::lookupFixedFrom(const std::string& frame,
                                                             const char* what) const {
-  if (frame.empty() || frame == parameters_.fixed_frame) return Eigen::Isometry3d::Identity();
   try {
     return toIsometry(tf_buffer_.lookupTransform(parameters_.fixed_frame, frame, ros::Time(0),
                                                  ros::Duration(parameters_.tf_timeout)));
@@ -200,157 +138,14 @@ Eigen::Isometry3d InformativenessServerRos::lookupFixedFrom(const std::string& f
 
 bool InformativenessServerRos::getHeatmap(GetHeatmap::Request& request,
                                           GetHeatmap::Response& response) {
-  try {
-    answerHeatmap(request, response);
-    response.success = true;
-  } catch (const std::exception& error) {
-    response = GetHeatmap::Response();
-    response.success = false;
-    response.message = error.what();
-  }
+  requests_->getHeatmap(request, response);
   return true;
-}
-
-void InformativenessServerRos::answerHeatmap(const GetHeatmap::Request& request,
-                                             GetHeatmap::Response& response) const {
-  const int views = scorer_->viewCount();
-  int view = -1;
-  if (request.mode == GetHeatmap::Request::MODE_VIEW_INDEX) {
-    if (request.view_index < 0 || request.view_index >= views) {
-      throw Error("Unknown view index " + std::to_string(request.view_index) +
-                  ": the model has views 0 to " + std::to_string(views - 1) + ".");
-    }
-    view = request.view_index;
-  } else if (request.mode == GetHeatmap::Request::MODE_DIRECTION) {
-    view = scorer_->nearestView(
-        Eigen::Vector3d(request.direction.x, request.direction.y, request.direction.z));
-  } else if (request.mode != GetHeatmap::Request::MODE_GLOBAL) {
-    throw Error("Unknown mode " + std::to_string(int(request.mode)) +
-                ": use MODE_GLOBAL (0), MODE_VIEW_INDEX (1) or MODE_DIRECTION (2).");
-  }
-  if (!request.scaling.empty() && request.scaling != "median" && request.scaling != "max") {
-    throw Error("Unknown scaling \"" + request.scaling + "\": use \"median\" or \"max\".");
-  }
-  const Eigen::VectorXf scores =
-      view < 0 ? model_->global_scores : Eigen::VectorXf(model_->score_matrix.col(view));
-  response.view_index = view;
-  response.min = minimumOfValid(scores);
-  response.median = medianOfValid(scores);
-  response.max = maximumOfValid(scores);
-  const double black_at = request.scaling == "max" ? response.max : response.median;
-  response.cloud = colouredSurface(*model_, scores, black_at, parameters_.object_frame);
-  response.scores.assign(scores.data(), scores.data() + scores.size());
-  response.message =
-      view < 0 ? "Global scores." : "Scores of training view " + std::to_string(view) + ".";
 }
 
 bool InformativenessServerRos::nextBestView(GetNextBestView::Request& request,
                                             GetNextBestView::Response& response) {
-  try {
-    answerNextBestView(request, response);
-    response.success = true;
-  } catch (const std::exception& error) {
-    response = GetNextBestView::Response();
-    response.success = false;
-    response.message = error.what();
-  }
+  requests_->nextBestView(request, response);
   return true;
-}
-
-void InformativenessServerRos::answerNextBestView(const GetNextBestView::Request& request,
-                                                  GetNextBestView::Response& response) {
-  const ViewUtility utility =
-      request.utility.empty() ? parameters_.default_utility : parseViewUtility(request.utility);
-  std::vector<std::string> notes;
-
-  // The object's pose (published by the estimator, or by a simulator's ground truth).
-  Eigen::Isometry3d world_from_object = Eigen::Isometry3d::Identity();
-  try {
-    world_from_object = lookupFixedFrom(parameters_.object_frame, "object pose");
-  } catch (const Error&) {
-    notes.push_back("The object frame '" + parameters_.object_frame +
-                    "' is not available in tf; the object " + "was assumed at the origin of '" +
-                    parameters_.fixed_frame + "' with identity rotation.");
-  }
-
-  // Candidate camera poses in the fixed frame.
-  std::vector<Eigen::Isometry3d> candidates;
-  if (!request.candidates.poses.empty()) {
-    const Eigen::Isometry3d world_from_frame =
-        lookupFixedFrom(request.candidates.header.frame_id, "candidate poses");
-    for (std::size_t i = 0; i < request.candidates.poses.size(); ++i) {
-      candidates.push_back(world_from_frame * fromPoseMsg(request.candidates.poses[i], i));
-    }
-  } else if (request.sample_count > 0) {
-    candidates = sampleCandidatePoses(request.sample_count, request.sample_distance,
-                                      world_from_object.translation());
-  } else {
-    throw Error(
-        "There are no candidate poses and no sampling request (set candidates, or "
-        "sample_count > 1 and sample_distance > 0).");
-  }
-
-  // The belief: the request's, else the latest estimate, else uniform.
-  PlanningScene scene;
-  scene.object_position = world_from_object.translation();
-  scene.occluder_radius = parameters_.occluder_radius;
-  if (request.use_belief) {
-    if (!request.belief.header.frame_id.empty() &&
-        request.belief.header.frame_id != parameters_.fixed_frame) {
-      throw Error("The request's belief is in frame '" + request.belief.header.frame_id +
-                  "', but beliefs must be in the fixed frame '" + parameters_.fixed_frame + "'.");
-    }
-    scene.belief = fromBinghamMixtureMsg(request.belief);
-    scene.orientation = mapEstimate(scene.belief);
-    notes.push_back("Belief from the request.");
-  } else {
-    std::lock_guard<std::mutex> lock(belief_mutex_);
-    if (latest_belief_) {
-      scene.belief = *latest_belief_;
-      scene.orientation = latest_map_;
-      notes.push_back("Belief from the latest estimate.");
-    } else {
-      // No estimate yet: a uniform belief, and the object's orientation as tf has it.
-      scene.orientation = quaternionFromRotationMatrix(world_from_object.linear());
-      notes.push_back("No belief received yet: uniform belief.");
-    }
-  }
-
-  if (request.use_occluder) {
-    const pcl::PointCloud<pcl::PointXYZ> occluder = toXyzCloud(request.occluder);
-    const Eigen::Isometry3d world_from_occluder =
-        lookupFixedFrom(request.occluder.header.frame_id, "occluder points");
-    for (const auto& p : occluder.points) {
-      const Eigen::Vector3d point(p.x, p.y, p.z);
-      if (point.allFinite()) scene.occluder_world.push_back(world_from_occluder * point);
-    }
-    if (scene.occluder_world.empty()) {
-      throw Error("The occluder cloud has no finite points (set use_occluder to false for none).");
-    }
-  }
-
-  std::vector<Eigen::Vector3d> positions;
-  positions.reserve(candidates.size());
-  for (const auto& pose : candidates) positions.push_back(pose.translation());
-  NextBestViewOptions options;
-  options.samples_per_component = parameters_.belief_samples_per_component;
-  const std::vector<RankedCandidate> ranked =
-      rankCandidates(*scorer_, positions, utility, scene, options);
-
-  response.ranked.header.frame_id = parameters_.fixed_frame;
-  response.ranked.header.stamp = ros::Time::now();
-  for (const RankedCandidate& candidate : ranked) {
-    response.ranked.poses.push_back(toPoseMsg(candidates[candidate.index]));
-    response.utilities.push_back(candidate.utility);
-    response.candidate_indices.push_back(candidate.index);
-  }
-  response.best.header = response.ranked.header;
-  response.best.pose = response.ranked.poses.front();
-  response.best_index = ranked.front().index;
-  std::string message = "Ranked " + std::to_string(ranked.size()) + " candidates by " +
-                        viewUtilityName(utility) + ".";
-  for (const auto& note : notes) message += " " + note;
-  response.message = message;
 }
 
 }  // namespace vdc

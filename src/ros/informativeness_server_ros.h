@@ -12,14 +12,10 @@
 #include <Eigen/Geometry>
 
 #include <memory>
-#include <mutex>
-#include <optional>
 #include <string>
 
+#include "informativeness_server_requests.h"
 #include "informativeness_server_ros_parameters.h"
-#include "view_direction_classification/bingham/bingham_mixture.h"
-#include "view_direction_classification/planning/next_best_view.h"
-#include "view_direction_classification/training/model_bundle.h"
 
 namespace vdc {
 
@@ -41,13 +37,8 @@ class InformativenessServerRos {
                     view_direction_classification::GetNextBestView::Response& response);
   void receiveEstimate(const view_direction_classification::BinghamMixture::ConstPtr& msg);
 
-  // Throws vdc::Error for an invalid request; fills the response on success.
-  void answerHeatmap(const view_direction_classification::GetHeatmap::Request& request,
-                     view_direction_classification::GetHeatmap::Response& response) const;
-  void answerNextBestView(const view_direction_classification::GetNextBestView::Request& request,
-                          view_direction_classification::GetNextBestView::Response& response);
-  // fixed_frame <- frame (empty = fixed_frame). Throws vdc::Error naming the frame if tf has no
-  // such transform within tf_timeout.
+  // fixed_frame <- frame through tf. Throws vdc::Error naming the frame if tf has no such
+  // transform within tf_timeout.
   Eigen::Isometry3d lookupFixedFrom(const std::string& frame, const char* what) const;
   // Builds the heatmap and view-score messages from the model (kept for the republish timer)
   // and publishes them once, latched.
@@ -55,18 +46,13 @@ class InformativenessServerRos {
 
   ros::NodeHandle node_, private_node_;
   InformativenessServerRosParameters parameters_;
-  std::shared_ptr<const ModelBundle> model_;
-  std::unique_ptr<ViewUtilityScorer> scorer_;
-
-  // Guards the belief between the estimate callback and the services. They run one at a time
-  // (ros::spin() in the node; the nodelet's single-threaded queue on a manager worker thread);
-  // the lock keeps that true on a multi-threaded spinner.
-  std::mutex belief_mutex_;
-  std::optional<BinghamMixture> latest_belief_;
-  Eigen::Vector4d latest_map_ = Eigen::Vector4d(1, 0, 0, 0);
-
   tf2_ros::Buffer tf_buffer_;
   tf2_ros::TransformListener tf_listener_;
+  // What the services answer and the belief they use (the node's logic without transport).
+  // The requests' belief lock keeps the estimate callback and the services apart; they run one
+  // at a time anyway (ros::spin() in the node; the nodelet's single-threaded queue on a manager
+  // worker thread), the lock keeps that true on a multi-threaded spinner.
+  std::unique_ptr<InformativenessServerRequests> requests_;
   ros::Publisher heatmap_publisher_, view_scores_publisher_;
   // What ~heatmap and ~view_scores carry (fixed after start-up), re-sent every republish_period.
   sensor_msgs::PointCloud2 heatmap_msg_;
