@@ -1,5 +1,6 @@
 // rostest: the orientation_estimator survives bad clouds and missing tf. After each kind of bad
-// input it must still be alive (answer ~reset) and publish no estimate for it, and afterwards a
+// input it must count the cloud as skipped in its diagnostics (the test waits for that, not for a
+// guessed time), still be alive (answer ~reset) and publish no estimate for it, and afterwards a
 // good rendered mug cloud must still give an estimate.
 
 #include <gtest/gtest.h>
@@ -12,6 +13,7 @@
 #include <random>
 #include <string>
 
+#include "estimator_diagnostics_counters.h"
 #include "mug_view_publisher.h"
 #include "view_direction_classification/common/quaternion.h"
 
@@ -19,12 +21,16 @@ namespace vdc {
 namespace {
 
 constexpr const char* kResetService = "orientation_estimator/reset";
+// [s] The diagnostics report every second; a skipped cloud shows in the next report (the slowest
+// bad cloud, one whose tf never arrives, waits tf_timeout = 0.2 s first).
+constexpr double kDiagnosticsTimeout = 10.0;
 
 class EstimatorBadInput : public testing::Test {
  protected:
   EstimatorBadInput()
       : views_(node_, meshPath(), Eigen::Isometry3d::Identity()),
-        estimates_(node_, "orientation_estimator/estimate") {}
+        estimates_(node_, "orientation_estimator/estimate"),
+        counters_(node_) {}
 
   static std::string meshPath() {
     std::string path;
@@ -36,22 +42,31 @@ class EstimatorBadInput : public testing::Test {
     ASSERT_TRUE(ros::service::waitForService(kResetService, ros::Duration(60.0)));
     ASSERT_TRUE(views_.waitUntilConnected(30.0));
     ASSERT_TRUE(estimates_.waitUntilConnected(30.0));
+    ASSERT_TRUE(counters_.current(EstimatorDiagnosticsCounters::kSkipped, 30.0))
+        << "the estimator reports no diagnostics counters";
     // A valid camera pose, so clouds in the camera frame fail for their content, not for tf.
     camera_pose_ =
         Eigen::Isometry3d(cameraFromObject(Eigen::Vector3d(1, 0, 0.5), 0.6, 0.0)).inverse();
   }
 
-  // Publishes `cloud` (with the camera tf at its stamp unless it is in another frame), lets the
-  // node work on it, then checks that it still answers ~reset and published no estimate.
+  // Publishes `cloud` (with the camera tf at its stamp unless it is in another frame), waits until
+  // the node's diagnostics count it as skipped, then checks that it fused nothing, still answers
+  // ~reset and published no estimate.
   void expectSurvivesWithoutEstimate(sensor_msgs::PointCloud2 cloud, const std::string& what) {
+    using Counters = EstimatorDiagnosticsCounters;
     const ros::Time stamp = ros::Time::now();
     cloud.header.stamp = stamp;
+    // The node's tf lookup waits tf_timeout for this transform: no sleep needed between the two.
     if (cloud.header.frame_id == kCameraFrame) views_.publishTransform(camera_pose_, stamp);
-    ros::WallDuration(0.05).sleep();
     const std::size_t before = estimates_.count();
+    const auto skipped = counters_.current(Counters::kSkipped, kDiagnosticsTimeout);
+    const auto fused = counters_.current(Counters::kFused, kDiagnosticsTimeout);
+    ASSERT_TRUE(skipped && fused);
     views_.publisher().publish(cloud);
-    // Longer than the tf timeout (0.2 s), so a lookup that waits has given up.
-    ros::WallDuration(1.0).sleep();
+    EXPECT_TRUE(counters_.waitUntilAbove(Counters::kSkipped, *skipped, kDiagnosticsTimeout))
+        << "the diagnostics did not count " << what << " as skipped within "
+        << kDiagnosticsTimeout << " s";
+    EXPECT_EQ(counters_.current(Counters::kFused, 0.0), fused) << what << " was fused";
     std_srvs::Trigger trigger;
     EXPECT_TRUE(ros::service::call(kResetService, trigger)) << "no ~reset answer after " << what;
     EXPECT_TRUE(trigger.response.success) << what;
@@ -82,6 +97,7 @@ class EstimatorBadInput : public testing::Test {
   ros::NodeHandle node_;
   MugViewPublisher views_;
   EstimateRecorder estimates_;
+  EstimatorDiagnosticsCounters counters_;
   Eigen::Isometry3d camera_pose_;
 };
 
