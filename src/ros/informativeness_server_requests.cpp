@@ -41,7 +41,7 @@ Eigen::Isometry3d fromPoseMsg(const geometry_msgs::Pose& msg, std::size_t index)
   const Eigen::Vector3d position(msg.position.x, msg.position.y, msg.position.z);
   const Eigen::Vector4d rotation(msg.orientation.w, msg.orientation.x, msg.orientation.y,
                                  msg.orientation.z);
-  if (!position.allFinite() || !rotation.allFinite() || std::abs(rotation.norm() - 1.0) > 1e-3) {
+  if (!position.allFinite() || !isUnitQuaternion(rotation, kRequestQuaternionTolerance)) {
     throw Error("Candidate pose " + std::to_string(index) +
                 " has a non-finite position or a non-unit orientation.");
   }
