@@ -122,6 +122,9 @@ OrientationEstimator::OrientationEstimator(std::shared_ptr<const ModelBundle> mo
   }
   checkParameters(parameters_);
   if (parameters_.n_feat <= 0) parameters_.n_feat = model_->parameters.n_feat;
+  if (parameters_.refinement == RefinementMode::kIcp) {
+    refiner_ = std::make_shared<const PoseRefiner>(*model_, parameters_.refinement_parameters);
+  }
   const double spacing = meanNeighbourAngle(model_->view_directions);
   kappa_ = parameters_.kappa > 0.0 ? parameters_.kappa : defaultViewConcentration(spacing);
 
@@ -260,8 +263,31 @@ ViewUpdate OrientationEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cl
   last_camera_position_world_ = world_from_camera.translation();
   const Clock::time_point fused = Clock::now();
   result.timing.fusion = millisecondsBetween(measured, fused);
-  result.timing.total = millisecondsBetween(start, fused);
+  if (refiner_) refineAfterFusion(object.points, world_from_camera, &result);
+  const Clock::time_point refined = Clock::now();
+  result.timing.refinement = millisecondsBetween(fused, refined);
+  result.timing.total = millisecondsBetween(start, refined);
   return result;
+}
+
+void OrientationEstimator::refineAfterFusion(const pcl::PointCloud<pcl::PointXYZ>& object_points,
+                                             const Eigen::Isometry3d& world_from_camera,
+                                             ViewUpdate* result) {
+  // Only this view's points for now: earlier views' clouds are not kept.
+  RefinementView view;
+  view.points = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>(object_points);
+  view.world_from_camera = world_from_camera;
+  const std::optional<Eigen::Vector3d> position = positionEstimate();
+  const RefinementResult refinement =
+      refiner_->refine(belief(), position.value_or(result->observed_centroid_world), {view});
+  result->refinement_skip_reason = refinement.skip_reason;
+  if (refinement.kept.empty()) return;
+  filter_.update(refinedMeasurement(refinement, parameters_.refined_fusion));
+  map_cache_.reset();
+  spread_cache_.reset();
+  hypotheses_cache_.reset();
+  refined_position_ = refinement.kept.front().world_from_object.translation();
+  result->refined_poses = static_cast<int>(refinement.kept.size());
 }
 
 bool OrientationEstimator::selectFrame(const pcl::PointCloud<pcl::PointXYZ>& cloud,
@@ -356,6 +382,7 @@ void OrientationEstimator::reset() {
   track_.reset();
   last_centroid_world_.reset();
   last_camera_position_world_.reset();
+  refined_position_.reset();
 }
 
 Eigen::Vector4d OrientationEstimator::mapOrientation() const {
@@ -366,6 +393,7 @@ Eigen::Vector4d OrientationEstimator::mapOrientation() const {
 double OrientationEstimator::entropy() const { return filter_.entropy(); }
 
 std::optional<Eigen::Vector3d> OrientationEstimator::positionEstimate() const {
+  if (refined_position_) return refined_position_;
   if (!last_centroid_world_ || !last_camera_position_world_) return std::nullopt;
   const Eigen::Matrix3d R_WO = quaternionToRotationMatrix(mapOrientation());
   Eigen::Vector3d towards_camera = *last_camera_position_world_ - *last_centroid_world_;

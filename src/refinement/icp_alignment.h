@@ -20,6 +20,7 @@ struct IcpSettings {
 
 struct IcpOutcome {
   bool converged = false;
+  bool degenerate = false;  // a step was singular (the surface leaves a motion unconstrained)
   Eigen::Isometry3d object_from_world = Eigen::Isometry3d::Identity();
   double fitness = 0.0;  // [m^2]
 };

@@ -136,7 +136,9 @@ std::vector<RefinementView> thinnedViews(const std::vector<RefinementView>& view
 pcl::PointCloud<pcl::PointNormal>::Ptr icpSource(const pcl::PointCloud<pcl::PointXYZ>::Ptr& world,
                                                  double voxel) {
   pcl::PointCloud<pcl::PointNormal>::Ptr source(new pcl::PointCloud<pcl::PointNormal>);
-  for (const auto& p : voxelFiltered(world, voxel)->points) {
+  // Held by name: a range-for over a temporary's member would read freed memory.
+  const pcl::PointCloud<pcl::PointXYZ>::Ptr filtered = voxelFiltered(world, voxel);
+  for (const auto& p : filtered->points) {
     pcl::PointNormal point;
     point.getVector3fMap() = p.getVector3fMap();
     point.getNormalVector3fMap().setZero();
@@ -193,6 +195,7 @@ Eigen::Vector4d orientationOf(const Eigen::Isometry3d& pose) {
 // Empty when the refined pose is accepted, else why not.
 std::string rejection(const RefinedPose& pose, const IcpOutcome& icp, const BinghamMixture& belief,
                       const RefinementParameters& parameters) {
+  if (icp.degenerate) return "ICP was degenerate: the points leave a motion unconstrained";
   if (!icp.converged) return "ICP did not converge";
   const double moved = (pose.world_from_object.translation() - pose.start.translation()).norm();
   const double turned = rotationErrorDeg(pose.orientation, pose.start_orientation);

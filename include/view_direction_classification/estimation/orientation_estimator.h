@@ -16,10 +16,18 @@
 #include "view_direction_classification/estimation/object_segmentation.h"
 #include "view_direction_classification/estimation/object_tracking.h"
 #include "view_direction_classification/estimation/orientation_filter.h"
+#include "view_direction_classification/estimation/refined_measurement.h"
 #include "view_direction_classification/planning/view_utility_scorer.h"
+#include "view_direction_classification/refinement/pose_refiner.h"
 #include "view_direction_classification/training/model_bundle.h"
 
 namespace vdc {
+
+// What follows the fusion of each view (doc/method.md, "Refinement").
+enum class RefinementMode {
+  kNone,  // the belief alone
+  kIcp,   // its leading hypotheses refined by ICP, verified, and the verified poses fused
+};
 
 // Online settings of the estimator (config/estimator.yaml). Feature settings are not here: they
 // come from the model bundle, so online features match the training ones.
@@ -45,6 +53,17 @@ struct EstimatorParameters {
   // the object was moved: the belief is reset. Smaller moves are followed. 0: twice the largest
   // centroid offset of the model's views plus 2 cm (their centroids differ by up to that much).
   double max_object_shift = 0.0;
+  // Geometric refinement after each fused view. The estimator's hypotheses: the 2 heaviest
+  // components, girdles every 30 degrees (ICP's basin of the roll is about +-45 degrees), so a
+  // view costs 24 ICPs at most.
+  RefinementMode refinement = RefinementMode::kNone;
+  RefinementParameters refinement_parameters = [] {
+    RefinementParameters p;
+    p.hypotheses.max_components = 2;
+    p.hypotheses.girdle_step_deg = 30.0;
+    return p;
+  }();
+  RefinedFusionParameters refined_fusion;
 };
 
 // Wall-clock time of each stage of one update [ms].
@@ -52,7 +71,7 @@ struct UpdateTiming {
   // selection: the tf-jump check, following the object and the novelty test (all a frame costs
   // that is not a new view).
   double selection = 0, segmentation = 0, features = 0, classification = 0, measurement = 0,
-         fusion = 0, total = 0;
+         fusion = 0, refinement = 0, total = 0;
 
   // Stage-wise sums and means over many updates (benchmarks, the evaluation).
   UpdateTiming& operator+=(const UpdateTiming& other) {
@@ -62,6 +81,7 @@ struct UpdateTiming {
     classification += other.classification;
     measurement += other.measurement;
     fusion += other.fusion;
+    refinement += other.refinement;
     total += other.total;
     return *this;
   }
@@ -72,6 +92,7 @@ struct UpdateTiming {
     classification /= count;
     measurement /= count;
     fusion /= count;
+    refinement /= count;
     total /= count;
     return *this;
   }
@@ -100,6 +121,10 @@ struct ViewUpdate {
   double likelihood_exponent = 1.0;
   Eigen::VectorXd p_sum;  // M, the view's summed distribution (when updated)
   Eigen::Vector3d observed_centroid_world = Eigen::Vector3d::Zero();
+  // With refinement: the verified poses fused after this view (0: none verified, or skipped,
+  // refinement_skip_reason then says why when the input was bad).
+  int refined_poses = 0;
+  std::string refinement_skip_reason;
   UpdateTiming timing;
 };
 
@@ -134,7 +159,8 @@ class OrientationEstimator {
   const FusedViews& fusedViews() const { return fused_views_; }
   Eigen::Vector4d mapOrientation() const;  // q_WO (w, x, y, z), w >= 0
   double entropy() const;
-  // Object origin in the fixed frame: the last observed centroid minus R_WO times the stored
+  // Object origin in the fixed frame: with refinement, the best verified pose's translation of
+  // the last view that had one; else the last observed centroid minus R_WO times the stored
   // centroid offset of the training direction the camera sees it from under the MAP
   // orientation. Empty before the first update.
   std::optional<Eigen::Vector3d> positionEstimate() const;
@@ -157,6 +183,10 @@ class OrientationEstimator {
   bool isNewView(const Eigen::Vector3d& camera_position, double separation) const;
   // Resets and says why in result->reset_reason.
   void resetForMovedObject(double shift, ViewUpdate* result);
+  // The refinement after a fused view: verified poses fused as a measurement (the belief is
+  // unchanged when none is verified or the input is bad).
+  void refineAfterFusion(const pcl::PointCloud<pcl::PointXYZ>& object_points,
+                         const Eigen::Isometry3d& world_from_camera, ViewUpdate* result);
   // Fixed-frame point the viewing directions are measured from: the position estimate, or the
   // tracked centroid before the first view.
   Eigen::Vector3d viewingReference() const;
@@ -172,6 +202,8 @@ class OrientationEstimator {
   std::optional<ObjectTrack> track_;
   std::optional<StampedPose> last_pose_;
   std::optional<Eigen::Vector3d> last_centroid_world_, last_camera_position_world_;
+  std::shared_ptr<const PoseRefiner> refiner_;  // only with RefinementMode::kIcp
+  std::optional<Eigen::Vector3d> refined_position_;
   // Only when selection.min_information_gain > 0.
   std::shared_ptr<const ViewUtilityScorer> gain_scorer_;
   // The MAP costs a search over every component: computed once per belief, on first request;

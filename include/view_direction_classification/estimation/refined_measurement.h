@@ -1,0 +1,29 @@
+#pragma once
+
+#include "view_direction_classification/bingham/bingham_mixture.h"
+#include "view_direction_classification/refinement/pose_refiner.h"
+
+namespace vdc {
+
+// How verified poses enter the belief (doc/method.md, "Refinement").
+struct RefinedFusionParameters {
+  // Concentration of each verified pose's component: exp(-c sin^2(theta/2)) halves at
+  // theta = 2 asin(sqrt(ln 2 / c)), 4.8 degrees for c = 400 (about what ICP's fit is good to on
+  // the 4 mm surface set).
+  double concentration = 400.0;
+  // A pose's weight is exp(likelihood_scale * score): a 0.05 better score counts e times more.
+  double likelihood_scale = 20.0;
+  // Weight of the uniform "none of them" component, so that the belief's other hypotheses
+  // survive when every verified pose is wrong.
+  double outlier_weight = 0.05;
+};
+
+// The verified poses (result.kept, q_WO) as one measurement over q_WO: one concentrated Bingham
+// component per pose, weighted by its verification likelihood, plus the uniform outlier
+// component; multiplying the belief by it keeps the belief one Bingham mixture. Throws
+// vdc::Error for no kept poses or invalid parameters (concentration or scale <= 0, outlier weight
+// outside (0, 1)).
+BinghamMixture refinedMeasurement(const RefinementResult& result,
+                                  const RefinedFusionParameters& parameters);
+
+}  // namespace vdc
