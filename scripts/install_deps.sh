@@ -13,6 +13,7 @@ packages=(
   libtf2-ros-dev libtf2-eigen-dev libtf2-geometry-msgs-dev libtf2-sensor-msgs-dev
   libsensor-msgs-dev libgeometry-msgs-dev libvisualization-msgs-dev libstd-srvs-dev
   libstd-msgs-dev libdiagnostic-updater-dev libdiagnostic-msgs-dev
+  libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure
   ros-std-msgs ros-geometry-msgs ros-sensor-msgs ros-std-srvs ros-visualization-msgs
   ros-diagnostic-msgs ros-message-generation ros-message-runtime
   # rospy side: rostest, rostopic, rosservice and the test scripts

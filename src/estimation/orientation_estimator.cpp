@@ -110,52 +110,67 @@ void checkParameters(const EstimatorParameters& p) {
 OrientationEstimator::OrientationEstimator(std::shared_ptr<const ModelBundle> model,
                                            EstimatorParameters parameters)
     : model_(std::move(model)),
-      parameters_(std::move(parameters)),
       kappa_(0.0),
       min_view_separation_(0.0),
       independent_view_separation_(0.0),
       max_object_shift_(0.0),
-      filter_(filterOptionsOf(parameters_)) {
+      filter_(filterOptionsOf(parameters)) {
   if (!model_) throw Error("the orientation estimator needs a model bundle");
   if (model_->view_directions.size() < 2) {
     throw Error("the model bundle has fewer than two viewing directions");
   }
-  checkParameters(parameters_);
-  if (parameters_.n_feat <= 0) parameters_.n_feat = model_->parameters.n_feat;
-  if (parameters_.refinement == RefinementMode::kIcp) {
-    refiner_ = std::make_shared<const PoseRefiner>(*model_, parameters_.refinement_parameters);
-  }
-  const double spacing = meanNeighbourAngle(model_->view_directions);
-  kappa_ = parameters_.kappa > 0.0 ? parameters_.kappa : defaultViewConcentration(spacing);
+  if (!model_->bounds.isEmpty()) extent_ = ObjectExtent::of(model_->bounds);
+  setParameters(std::move(parameters));
+}
 
-  const FrameSelectionParameters& selection = parameters_.selection;
+void OrientationEstimator::setParameters(EstimatorParameters parameters) {
+  // Everything is checked and derived into locals first, so a refused value changes nothing.
+  checkParameters(parameters);
+  const SegmentationParameters& segmentation = parameters.segmentation;
+  if (segmentation.mode == SegmentationMode::kTabletop && extent_.diagonal() <= 0.0) {
+    throw Error("tabletop segmentation needs the model's extent, and this bundle has none");
+  }
+  const OrientationFilterOptions filter_options = filterOptionsOf(parameters);
+  reduce(BinghamMixture(), filter_options.reduction);  // throws for invalid reduction options
+
+  if (parameters.n_feat <= 0) parameters.n_feat = model_->parameters.n_feat;
+  const double spacing = meanNeighbourAngle(model_->view_directions);
+  const FrameSelectionParameters& selection = parameters.selection;
+  // Visible parts' centroids lie within the largest offset of the origin: two views of a static
+  // object cannot see centroids further apart than twice that (plus noise and clutter).
+  const double offset = largestCentroidOffset(*model_);
+  SightingParameters sighting;
+  if (segmentation.mode == SegmentationMode::kNone) {
+    sighting.radius = 0.0;  // the whole cloud is the object
+    sighting.min_points = parameters.min_features;
+  } else {
+    sighting.radius = offset + boundingRadius(model_->bounds) + segmentation.cluster_tolerance;
+    sighting.min_points = segmentation.min_cluster_points;
+  }
+  sighting.see_through_distance = std::max(0.25 * extent_.sizes.minCoeff(), 0.01);
+  sighting.table_distance = segmentation.plane_distance;
+  // Rebuilt on every call (a reconfigure is rare; its cost is the refiner's set-up).
+  std::shared_ptr<const PoseRefiner> refiner;
+  if (parameters.refinement == RefinementMode::kIcp) {
+    refiner = std::make_shared<const PoseRefiner>(*model_, parameters.refinement_parameters);
+  }
+
+  filter_.setOptions(filter_options);
+  refiner_ = std::move(refiner);
+  kappa_ = parameters.kappa > 0.0 ? parameters.kappa : defaultViewConcentration(spacing);
   min_view_separation_ =
       selection.min_view_separation < 0.0 ? 0.5 * spacing : selection.min_view_separation;
   independent_view_separation_ =
       selection.independent_view_separation < 0.0 ? spacing : selection.independent_view_separation;
-  if (selection.min_information_gain > 0.0) {
+  if (selection.min_information_gain <= 0.0) {
+    gain_scorer_.reset();
+  } else if (!gain_scorer_) {
     gain_scorer_ = std::make_shared<const ViewUtilityScorer>(model_);
   }
-
-  const SegmentationParameters& segmentation = parameters_.segmentation;
-  if (!model_->bounds.isEmpty()) extent_ = ObjectExtent::of(model_->bounds);
-  if (segmentation.mode == SegmentationMode::kTabletop && extent_.diagonal() <= 0.0) {
-    throw Error("tabletop segmentation needs the model's extent, and this bundle has none");
-  }
-  // Visible parts' centroids lie within the largest offset of the origin: two views of a static
-  // object cannot see centroids further apart than twice that (plus noise and clutter).
-  const double offset = largestCentroidOffset(*model_);
   max_object_shift_ =
-      parameters_.max_object_shift > 0.0 ? parameters_.max_object_shift : 2.0 * offset + 0.02;
-  if (segmentation.mode == SegmentationMode::kNone) {
-    sighting_.radius = 0.0;  // the whole cloud is the object
-    sighting_.min_points = parameters_.min_features;
-  } else {
-    sighting_.radius = offset + boundingRadius(model_->bounds) + segmentation.cluster_tolerance;
-    sighting_.min_points = segmentation.min_cluster_points;
-  }
-  sighting_.see_through_distance = std::max(0.25 * extent_.sizes.minCoeff(), 0.01);
-  sighting_.table_distance = segmentation.plane_distance;
+      parameters.max_object_shift > 0.0 ? parameters.max_object_shift : 2.0 * offset + 0.02;
+  sighting_ = sighting;
+  parameters_ = std::move(parameters);
 }
 
 ViewUpdate OrientationEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cloud,

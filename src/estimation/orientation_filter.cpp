@@ -4,13 +4,18 @@
 
 namespace vdc {
 
-OrientationFilter::OrientationFilter(OrientationFilterOptions options)
-    : options_(std::move(options)) {
-  if (options_.entropy_samples < 1) {
+OrientationFilter::OrientationFilter(OrientationFilterOptions options) {
+  setOptions(std::move(options));
+}
+
+void OrientationFilter::setOptions(OrientationFilterOptions options) {
+  if (options.entropy_samples < 1) {
     throw Error("The orientation filter's entropy_samples must be at least 1.");
   }
-  // Validates the reduction options now rather than at the first update.
-  reduce(belief_, options_.reduction);
+  // Validates the reduction options now rather than at the next update (the result is not
+  // kept: the belief is only reduced by update()).
+  reduce(BinghamMixture(), options.reduction);
+  options_ = std::move(options);
 }
 
 void OrientationFilter::update(const BinghamMixture& measurement) {

@@ -18,6 +18,7 @@
 #include "view_direction_classification/ros/bingham_conversions.h"
 #include "view_direction_classification/ros/cloud_conversions.h"
 #include "view_direction_classification/ros/geometry_conversions.h"
+#include "view_direction_classification/ros/reconfigurable_parameters.h"
 #include "view_direction_classification/training/model_bundle.h"
 
 namespace vdc {
@@ -62,6 +63,7 @@ OrientationEstimatorRos::OrientationEstimatorRos(ros::NodeHandle node, ros::Node
                                   [this](const ros::TimerEvent&) { rebroadcastObjectTransform(); });
   }
 
+  startReconfigureServer();
   worker_ = std::thread(&OrientationEstimatorRos::workerLoop, this);
   // Queue of one: the worker only ever wants the newest cloud.
   cloud_subscriber_ = node_.subscribe("cloud", 1, &OrientationEstimatorRos::cloudCallback, this);
@@ -74,6 +76,7 @@ OrientationEstimatorRos::OrientationEstimatorRos(ros::NodeHandle node, ros::Node
 }
 
 OrientationEstimatorRos::~OrientationEstimatorRos() {
+  reconfigure_server_.reset();
   object_transform_timer_.stop();
   cloud_subscriber_.shutdown();
   {
@@ -300,6 +303,48 @@ void OrientationEstimatorRos::announceReset(const std::string& why) {
   header.stamp = ros::Time::now();
   header.frame_id = parameters_.fixed_frame;
   markers_publisher_.publish(makeClearMarkers(header));
+}
+
+void OrientationEstimatorRos::startReconfigureServer() {
+  reconfigure_server_ = std::make_unique<dynamic_reconfigure::Server<OrientationEstimatorConfig>>(
+      reconfigure_mutex_, private_node_);
+  // The start-up parameters are authoritative: the server shows (and its first callback
+  // applies) what the node runs with, not the .cfg's defaults for parameters the yaml left unset.
+  reconfigure_server_->updateConfig(
+      toReconfigureConfig<OrientationEstimatorConfig>(estimatorParameterTable(), parameters_));
+  reconfigure_server_->setCallback([this](OrientationEstimatorConfig& config, std::uint32_t level) {
+    reconfigure(config, level);
+  });
+}
+
+// Runs in the reconfigure service's callback. Applied under estimator_mutex_, so a change never
+// lands inside an update: it takes effect from the next cloud the worker processes.
+void OrientationEstimatorRos::reconfigure(OrientationEstimatorConfig& config, std::uint32_t) {
+  std::lock_guard<std::mutex> lock(estimator_mutex_);
+  try {
+    const EstimatorRosParameters next =
+        withReconfigureConfig(estimatorParameterTable(), parameters_, config);
+    estimator_->setParameters(next.core);  // checks again; throws before changing anything
+    parameters_.core = next.core;
+    parameters_.converged_cone90_deg = next.converged_cone90_deg;
+  } catch (const std::exception& error) {
+    ROS_WARN_NAMED(private_node_.getNamespace(),
+                   "%s: reconfigure refused, the previous settings stay: %s",
+                   private_node_.getNamespace().c_str(), error.what());
+    // The server stores and publishes (~parameter_updates, the service's answer) what the
+    // callback leaves in `config`: the settings the node still runs with.
+    config =
+        toReconfigureConfig<OrientationEstimatorConfig>(estimatorParameterTable(), parameters_);
+    return;
+  }
+  ROS_INFO_NAMED(private_node_.getNamespace(),
+                 "%s: reconfigured (from the next cloud): n_feat %d, kappa %g, max_components %d, "
+                 "min_weight %g, min_view_separation %g, independent_view_separation %g, "
+                 "min_information_gain %g, converged_cone90_deg %g",
+                 private_node_.getNamespace().c_str(), config.n_feat, config.kappa,
+                 config.max_components, config.min_weight, config.min_view_separation,
+                 config.independent_view_separation, config.min_information_gain,
+                 config.converged_cone90_deg);
 }
 
 void OrientationEstimatorRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {

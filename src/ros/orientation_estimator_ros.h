@@ -1,6 +1,7 @@
 #pragma once
 
 #include <diagnostic_updater/diagnostic_updater.h>
+#include <dynamic_reconfigure/server.h>
 #include <geometry_msgs/TransformStamped.h>
 #include <ros/ros.h>
 #include <sensor_msgs/PointCloud2.h>
@@ -18,9 +19,13 @@
 #include <thread>
 
 #include "estimator_ros_parameters.h"
+#include "view_direction_classification/OrientationEstimatorConfig.h"
 #include "view_direction_classification/estimation/orientation_estimator.h"
 
 namespace vdc {
+
+// Generated from cfg/OrientationEstimator.cfg.
+using OrientationEstimatorConfig = view_direction_classification::OrientationEstimatorConfig;
 
 // The orientation_estimator's ROS side (doc/nodes.md): reads the parameters, loads
 // the model, subscribes `cloud`, looks up the camera pose with tf2, calls the core
@@ -40,7 +45,9 @@ namespace vdc {
 // worker threads in the nodelet (its getNodeHandle() queue is single-threaded); the worker
 // thread runs beside them, and the mutexes guard what it shares with them. tf2's listener
 // fills the buffer from a thread of its own. Log lines go to the logger named after the node or
-// nodelet (ROS_*_NAMED with the private namespace, which is what NODELET_* uses).
+// nodelet (ROS_*_NAMED with the private namespace, which is what NODELET_* uses). The settings
+// of cfg/OrientationEstimator.cfg can be changed while it runs (dynamic_reconfigure, its service
+// callback runs on the same queue): a change lands between two clouds.
 class OrientationEstimatorRos {
  public:
   // Throws vdc::Error (or another std::exception) for invalid parameters or an unreadable model:
@@ -62,11 +69,15 @@ class OrientationEstimatorRos {
   void resetBelief(const std::string& why);
   void announceReset(const std::string& why);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
+  void startReconfigureServer();
+  void reconfigure(OrientationEstimatorConfig& config, std::uint32_t level);
 
   ros::NodeHandle node_, private_node_;
   EstimatorRosParameters parameters_;
 
-  // The core estimator, guarded by estimator_mutex_ (the worker updates it, ~reset resets it).
+  // The core estimator, guarded by estimator_mutex_ (the worker updates it, ~reset resets it, a
+  // reconfigure sets its parameters and parameters_.core and .converged_cone90_deg; the other
+  // fields of parameters_ never change after start-up).
   std::mutex estimator_mutex_;
   std::unique_ptr<OrientationEstimator> estimator_;
   ros::Time last_stamp_;
@@ -86,6 +97,10 @@ class OrientationEstimatorRos {
   ros::Subscriber cloud_subscriber_;
   diagnostic_updater::Updater diagnostics_;
   ros::Timer diagnostics_timer_;
+  // dynamic_reconfigure's server (~set_parameters, ~parameter_updates); its mutex serialises
+  // its callback with updateConfig.
+  boost::recursive_mutex reconfigure_mutex_;
+  std::unique_ptr<dynamic_reconfigure::Server<OrientationEstimatorConfig>> reconfigure_server_;
 
   // Newest unprocessed cloud (the hand-over between callback and worker).
   std::mutex pending_mutex_;

@@ -7,12 +7,12 @@
 #include <random>
 
 #include "support/quick_mug_model.h"
-#include "view_direction_classification/geometry/camera.h"
-#include "view_direction_classification/geometry/depth_renderer.h"
 #include "view_direction_classification/common/error.h"
-#include "view_direction_classification/geometry/mug_mesh.h"
 #include "view_direction_classification/common/quaternion.h"
 #include "view_direction_classification/common/rotation_error.h"
+#include "view_direction_classification/geometry/camera.h"
+#include "view_direction_classification/geometry/depth_renderer.h"
+#include "view_direction_classification/geometry/mug_mesh.h"
 
 namespace vdc {
 namespace {
@@ -95,6 +95,30 @@ TEST_F(OrientationEstimatorTest, UsesTheBundlesFeatureCountAndAGridWideKappaByDe
   EXPECT_EQ(estimator.parameters().n_feat, test::quickMugModel()->parameters.n_feat);
   // 12 icosahedron directions are 63.4 deg apart: kappa = ln 2 / (2 sin^2(15.9 deg)) ~ 4.6.
   EXPECT_NEAR(estimator.kappa(), std::log(2.0) / (2.0 * std::pow(std::sin(1.1071 / 4), 2)), 0.05);
+}
+
+TEST_F(OrientationEstimatorTest, NewParametersApplyToTheNextViewAndARefusedOneChangesNothing) {
+  OrientationEstimator estimator(test::quickMugModel(), {});
+  const auto [cloud, world_from_camera] =
+      view(Eigen::Vector3d(0.3, -0.5, 0.8).normalized(), 0.4, 1);
+  ASSERT_TRUE(estimator.update(cloud, world_from_camera).updated);
+  EstimatorParameters changed;
+  changed.kappa = 18.4;
+  changed.max_components = 1;
+  estimator.setParameters(changed);
+  EXPECT_EQ(estimator.kappa(), 18.4);
+  EXPECT_EQ(estimator.viewsFused(), 1) << "the belief is kept";
+  EstimatorParameters refused = changed;
+  refused.kappa = 5.0;
+  refused.min_weight = 1.0;
+  EXPECT_THROW(estimator.setParameters(refused), Error);
+  EXPECT_EQ(estimator.kappa(), 18.4);
+  EXPECT_EQ(estimator.parameters().min_weight, changed.min_weight);
+  // The next fusion reduces with the new K_max.
+  const auto [second, world_from_second] =
+      view(Eigen::Vector3d(-0.6, 0.2, 0.5).normalized(), 0.4, 2);
+  estimator.update(second, world_from_second);
+  EXPECT_EQ(estimator.belief().size(), 1u);
 }
 
 TEST_F(OrientationEstimatorTest, OneViewFusesAMeasurementThatNarrowsTheBelief) {

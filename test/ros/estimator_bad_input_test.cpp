@@ -64,8 +64,8 @@ class EstimatorBadInput : public testing::Test {
     ASSERT_TRUE(skipped && fused);
     views_.publisher().publish(cloud);
     EXPECT_TRUE(counters_.waitUntilAbove(Counters::kSkipped, *skipped, kDiagnosticsTimeout))
-        << "the diagnostics did not count " << what << " as skipped within "
-        << kDiagnosticsTimeout << " s";
+        << "the diagnostics did not count " << what << " as skipped within " << kDiagnosticsTimeout
+        << " s";
     EXPECT_EQ(counters_.current(Counters::kFused, 0.0), fused) << what << " was fused";
     std_srvs::Trigger trigger;
     EXPECT_TRUE(ros::service::call(kResetService, trigger)) << "no ~reset answer after " << what;

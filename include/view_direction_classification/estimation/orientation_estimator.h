@@ -151,6 +151,12 @@ class OrientationEstimator {
                     std::optional<double> time = std::nullopt);
   // Back to the uniform prior (forgets the fused views, the position and the track too).
   void reset();
+  // New settings for the frames to come (a live reconfigure): checked as the constructor checks
+  // them; a refused value throws vdc::Error and leaves every setting as it was. The belief, the
+  // fused views and the track are kept: the next update() selects, measures and reduces with
+  // the new settings. Not thread-safe with update(): the caller serialises them (the ROS node
+  // calls both under one mutex, so a change lands between two frames).
+  void setParameters(EstimatorParameters parameters);
 
   const BinghamMixture& belief() const { return filter_.belief(); }
   int updateCount() const { return filter_.updateCount(); }

@@ -29,6 +29,9 @@ class OrientationFilter {
   void update(const BinghamMixture& measurement);
   // Back to the uniform prior.
   void reset();
+  // New options (throws vdc::Error for invalid ones, keeping the old): the belief is kept and
+  // the next update() reduces with them.
+  void setOptions(OrientationFilterOptions options);
 
   const BinghamMixture& belief() const { return belief_; }
   int updateCount() const { return update_count_; }

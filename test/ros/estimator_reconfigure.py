@@ -1,0 +1,51 @@
+#!/usr/bin/python3
+"""rostest: the orientation_estimator's dynamic_reconfigure server starts from the node's
+parameters, applies a valid change and refuses a value the parameter rule refuses."""
+
+import unittest
+
+import rospy
+import rostest
+from dynamic_reconfigure.client import Client
+
+NODE = "orientation_estimator"
+
+
+class EstimatorReconfigure(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        rospy.init_node("estimator_reconfigure_test")
+        cls.client = Client(NODE, timeout=60)
+
+    def test_start_up_parameters_are_shown_not_the_cfg_defaults(self):
+        config = self.client.get_configuration(timeout=10)
+        self.assertAlmostEqual(config["kappa"], 18.4)
+        self.assertEqual(config["max_components"], 20)
+        # Parameters the launch left to config/estimator.yaml.
+        self.assertAlmostEqual(config["min_weight"], 0.001)
+        self.assertAlmostEqual(config["converged_cone90_deg"], 15.0)
+
+    def test_a_valid_change_is_taken(self):
+        config = self.client.update_configuration({"max_components": 5, "n_feat": 30})
+        self.assertEqual(config["max_components"], 5)
+        self.assertEqual(config["n_feat"], 30)
+        self.assertEqual(rospy.get_param("/%s/max_components" % NODE), 5)
+        self.client.update_configuration({"max_components": 20, "n_feat": 0})
+
+    def test_a_value_the_rule_refuses_keeps_the_previous_one(self):
+        before = self.client.get_configuration(timeout=10)
+        # In the .cfg's range [0, 1], but ~min_weight must lie in [0, 1).
+        config = self.client.update_configuration({"min_weight": 1.0, "max_components": 7})
+        self.assertAlmostEqual(config["min_weight"], before["min_weight"])
+        # The whole request is refused, not only its bad value.
+        self.assertEqual(config["max_components"], before["max_components"])
+        self.assertAlmostEqual(rospy.get_param("/%s/min_weight" % NODE), before["min_weight"])
+
+    def test_a_value_outside_the_cfg_range_is_clamped(self):
+        config = self.client.update_configuration({"max_components": 0})
+        self.assertEqual(config["max_components"], 1)
+        self.client.update_configuration({"max_components": 20})
+
+
+if __name__ == "__main__":
+    rostest.rosrun("view_direction_classification", "estimator_reconfigure", EstimatorReconfigure)
