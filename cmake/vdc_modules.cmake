@@ -20,7 +20,11 @@ function(vdc_add_module module)
   target_compile_options(${target} PRIVATE ${VDC_WARNINGS})
   target_link_libraries(${target} PUBLIC ${ARG_DEPENDS} PRIVATE ${ARG_PRIVATE_DEPENDS})
   # A module links everything it uses: an undeclared dependency fails here, not in its users.
-  target_link_options(${target} PRIVATE -Wl,--no-undefined)
+  # Not in sanitizer builds: clang links the sanitizer runtimes into executables only, so a
+  # library's references to them are undefined until then (the ordinary build checks).
+  if(NOT VDC_SANITIZE)
+    target_link_options(${target} PRIVATE -Wl,--no-undefined)
+  endif()
   foreach(dependency IN LISTS ARG_DEPENDS ARG_PRIVATE_DEPENDS)
     if(dependency MATCHES "${VDC_ROS_LIBRARY_PATTERN}")
       message(FATAL_ERROR "${target} is core and must not link ROS, but links ${dependency}")

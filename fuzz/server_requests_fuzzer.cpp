@@ -1,0 +1,174 @@
+// libFuzzer target: the informativeness server's request handling without ROS transport
+// (InformativenessServerRequests, which the node's service servers and estimate subscriber call):
+// up to four GetHeatmap / GetNextBestView requests and estimates built from the bytes, on a real
+// model bundle. tf is replaced by fixed transforms for the frames "object" and "camera" (every
+// other frame is unknown, as tf would say). Every request must be answered: success with a
+// response of the promised shape (every candidate ranked once, best first, finite utilities; a
+// score per surface point), or failure with a message. An invalid estimate must throw vdc::Error.
+//
+// The model: $VDC_FUZZ_MODEL, else the model bundle seed of the model_bundle target (a real mug
+// model trained small, fuzz/corpus/model_bundle/mug_tiny.h5).
+
+#include <fuzzer/FuzzedDataProvider.h>
+#include <ros/time.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "../src/ros/informativeness_server_requests.h"
+#include "fuzzed_messages.h"
+#include "view_direction_classification/common/error.h"
+#include "view_direction_classification/common/quaternion.h"
+
+namespace {
+
+using vdc::fuzz::fuzzedDouble;
+using view_direction_classification::GetHeatmap;
+using view_direction_classification::GetNextBestView;
+
+std::shared_ptr<const vdc::ModelBundle> model() {
+  static const auto bundle = [] {
+    ros::Time::init();  // the responses' stamps, without a node
+    const char* path = std::getenv("VDC_FUZZ_MODEL");
+    return std::make_shared<const vdc::ModelBundle>(
+        vdc::loadModelBundle(path ? path : VDC_SOURCE_DIR "/fuzz/corpus/model_bundle/mug_tiny.h5"));
+  }();
+  return bundle;
+}
+
+// What tf would answer for a world with the object and one camera in it.
+Eigen::Isometry3d lookupFixedFrom(const std::string& frame, const char* what) {
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  if (frame == "object") {
+    pose.translate(Eigen::Vector3d(0.05, -0.02, 0.1));
+    pose.rotate(Eigen::AngleAxisd(0.7, Eigen::Vector3d::UnitZ()));
+  } else if (frame == "camera") {
+    pose.translate(Eigen::Vector3d(0.4, 0.3, 0.5));
+    pose.rotate(Eigen::AngleAxisd(2.0, Eigen::Vector3d(1, 1, 0).normalized()));
+  } else {
+    throw vdc::Error(std::string("The ") + what + " are in frame '" + frame +
+                     "', which tf cannot transform into the fixed frame.");
+  }
+  return pose;
+}
+
+std::string pickString(FuzzedDataProvider& data, const std::array<const char*, 3>& known) {
+  const std::size_t pick = data.ConsumeIntegralInRange<std::size_t>(0, known.size());
+  return pick < known.size() ? known[pick] : data.ConsumeRandomLengthString(24);
+}
+
+double coordinate(FuzzedDataProvider& data) {
+  return data.ConsumeBool() ? data.ConsumeFloatingPointInRange(-2.0, 2.0) : fuzzedDouble(data);
+}
+
+GetHeatmap::Request heatmapRequest(FuzzedDataProvider& data, int views) {
+  GetHeatmap::Request request;
+  request.mode = data.ConsumeBool() ? data.ConsumeIntegralInRange<std::uint8_t>(0, 3)
+                                    : data.ConsumeIntegral<std::uint8_t>();
+  request.view_index = data.ConsumeBool() ? data.ConsumeIntegralInRange(-1, views)
+                                          : data.ConsumeIntegral<std::int32_t>();
+  request.direction.x = coordinate(data);
+  request.direction.y = coordinate(data);
+  request.direction.z = coordinate(data);
+  request.scaling = pickString(data, {"", "median", "max"});
+  return request;
+}
+
+GetNextBestView::Request nextBestViewRequest(FuzzedDataProvider& data) {
+  GetNextBestView::Request request;
+  request.candidates.header.frame_id = vdc::fuzz::fuzzedFrame(data);
+  const int candidates = data.ConsumeIntegralInRange(0, 12);
+  for (int i = 0; i < candidates; ++i) {
+    geometry_msgs::Pose pose;
+    pose.position.x = coordinate(data);
+    pose.position.y = coordinate(data);
+    pose.position.z = coordinate(data);
+    pose.orientation = vdc::fuzz::fuzzedQuaternionMsg(data);
+    request.candidates.poses.push_back(pose);
+  }
+  request.sample_count = data.ConsumeBool() ? data.ConsumeIntegralInRange(-1, 64)
+                                            : data.ConsumeIntegral<std::int32_t>();
+  request.sample_distance =
+      data.ConsumeBool() ? data.ConsumeFloatingPointInRange(0.0, 2.0) : fuzzedDouble(data);
+  request.utility = pickString(data, {"", "informativeness", "information_gain"});
+  request.use_belief = data.ConsumeBool();
+  if (request.use_belief) request.belief = vdc::fuzz::fuzzedBinghamMixtureMsg(data);
+  request.use_occluder = data.ConsumeBool();
+  if (request.use_occluder) request.occluder = vdc::fuzz::fuzzedPointCloud2(data);
+  return request;
+}
+
+void checkHeatmap(const GetHeatmap::Response& response, std::size_t surface_points) {
+  if (!response.success) {
+    if (response.message.empty()) std::abort();
+    return;
+  }
+  if (response.scores.size() != surface_points ||
+      std::size_t(response.cloud.width) * response.cloud.height != surface_points) {
+    std::abort();
+  }
+  if (!(response.min <= response.median && response.median <= response.max)) std::abort();
+}
+
+void checkNextBestView(const GetNextBestView::Request& request,
+                       const GetNextBestView::Response& response) {
+  if (!response.success) {
+    if (response.message.empty()) std::abort();
+    return;
+  }
+  const std::size_t count = response.ranked.poses.size();
+  if (count == 0 || response.utilities.size() != count ||
+      response.candidate_indices.size() != count) {
+    std::abort();
+  }
+  if (!request.candidates.poses.empty() && count != request.candidates.poses.size()) std::abort();
+  std::vector<bool> seen(count, false);
+  for (std::size_t i = 0; i < count; ++i) {
+    const int index = response.candidate_indices[i];
+    if (index < 0 || std::size_t(index) >= count || seen[index]) std::abort();
+    seen[index] = true;
+    if (!std::isfinite(response.utilities[i])) std::abort();
+    if (i > 0 && response.utilities[i] > response.utilities[i - 1]) std::abort();
+  }
+  if (response.best_index != response.candidate_indices[0]) std::abort();
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* bytes, std::size_t size) {
+  FuzzedDataProvider data(bytes, size);
+  vdc::InformativenessServerRosParameters parameters;
+  parameters.belief_samples_per_component = data.ConsumeIntegralInRange(0, 8);
+  // A fresh server per input, so an input's outcome does not depend on the ones before it.
+  vdc::InformativenessServerRequests server(model(), parameters, lookupFixedFrom);
+  const int views = server.planner().viewCount();
+  for (int step = 0; step < 4 && data.remaining_bytes() > 0; ++step) {
+    switch (data.ConsumeIntegralInRange(0, 2)) {
+      case 0: {
+        GetHeatmap::Response response;
+        server.getHeatmap(heatmapRequest(data, views), response);
+        checkHeatmap(response, server.model().surface_points.size());
+        break;
+      }
+      case 1: {
+        const GetNextBestView::Request request = nextBestViewRequest(data);
+        GetNextBestView::Response response;
+        server.nextBestView(request, response);
+        checkNextBestView(request, response);
+        break;
+      }
+      default:
+        try {
+          server.receiveEstimate(vdc::fuzz::fuzzedBinghamMixtureMsg(data));
+        } catch (const vdc::Error&) {
+          // ignored with a throttled warning by the node
+        }
+    }
+  }
+  return 0;
+}
