@@ -76,20 +76,33 @@ InformativenessServerRequests::InformativenessServerRequests(
     FrameLookup lookup)
     : model_(std::move(model)),
       scorer_(std::make_unique<ViewUtilityScorer>(model_)),
-      parameters_(std::move(parameters)),
-      lookup_(std::move(lookup)) {}
+      lookup_(std::move(lookup)),
+      parameters_(std::move(parameters)) {}
+
+void InformativenessServerRequests::setParameters(
+    const InformativenessServerRosParameters& parameters) {
+  std::lock_guard<std::mutex> lock(parameters_mutex_);
+  parameters_ = parameters;
+}
+
+InformativenessServerRosParameters InformativenessServerRequests::parameters() const {
+  std::lock_guard<std::mutex> lock(parameters_mutex_);
+  return parameters_;
+}
 
 Eigen::Isometry3d InformativenessServerRequests::lookupFixedFrom(const std::string& frame,
+                                                                 const std::string& fixed_frame,
                                                                  const char* what) const {
-  if (frame.empty() || frame == parameters_.fixed_frame) return Eigen::Isometry3d::Identity();
+  if (frame.empty() || frame == fixed_frame) return Eigen::Isometry3d::Identity();
   return lookup_(frame, what);
 }
 
 void InformativenessServerRequests::receiveEstimate(
     const view_direction_classification::BinghamMixture& msg) {
-  if (!msg.header.frame_id.empty() && msg.header.frame_id != parameters_.fixed_frame) {
+  const std::string fixed_frame = parameters().fixed_frame;
+  if (!msg.header.frame_id.empty() && msg.header.frame_id != fixed_frame) {
     throw Error("it is in frame '" + msg.header.frame_id + "', not the fixed frame '" +
-                parameters_.fixed_frame + "'");
+                fixed_frame + "'");
   }
   BinghamMixture belief = fromBinghamMixtureMsg(msg);
   const Eigen::Vector4d map = mapEstimate(belief);
@@ -137,7 +150,7 @@ void InformativenessServerRequests::answerHeatmap(const GetHeatmap::Request& req
   response.median = medianOfValid(scores);
   response.max = maximumOfValid(scores);
   const double black_at = request.scaling == "max" ? response.max : response.median;
-  response.cloud = colouredSurface(*model_, scores, black_at, parameters_.object_frame);
+  response.cloud = colouredSurface(*model_, scores, black_at, parameters().object_frame);
   response.scores.assign(scores.data(), scores.data() + scores.size());
   response.message =
       view < 0 ? "Global scores." : "Scores of training view " + std::to_string(view) + ".";
@@ -157,25 +170,26 @@ void InformativenessServerRequests::nextBestView(const GetNextBestView::Request&
 
 void InformativenessServerRequests::answerNextBestView(const GetNextBestView::Request& request,
                                                        GetNextBestView::Response& response) {
+  const InformativenessServerRosParameters settings = parameters();
   const ViewUtility utility =
-      request.utility.empty() ? parameters_.default_utility : parseViewUtility(request.utility);
+      request.utility.empty() ? settings.default_utility : parseViewUtility(request.utility);
   std::vector<std::string> notes;
 
   // The object's pose (published by the estimator, or by a simulator's ground truth).
   Eigen::Isometry3d world_from_object = Eigen::Isometry3d::Identity();
   try {
-    world_from_object = lookupFixedFrom(parameters_.object_frame, "object pose");
+    world_from_object = lookupFixedFrom(settings.object_frame, settings.fixed_frame, "object pose");
   } catch (const Error&) {
-    notes.push_back("The object frame '" + parameters_.object_frame +
+    notes.push_back("The object frame '" + settings.object_frame +
                     "' is not available in tf; the object " + "was assumed at the origin of '" +
-                    parameters_.fixed_frame + "' with identity rotation.");
+                    settings.fixed_frame + "' with identity rotation.");
   }
 
   // Candidate camera poses in the fixed frame.
   std::vector<Eigen::Isometry3d> candidates;
   if (!request.candidates.poses.empty()) {
-    const Eigen::Isometry3d world_from_frame =
-        lookupFixedFrom(request.candidates.header.frame_id, "candidate poses");
+    const Eigen::Isometry3d world_from_frame = lookupFixedFrom(
+        request.candidates.header.frame_id, settings.fixed_frame, "candidate poses");
     for (std::size_t i = 0; i < request.candidates.poses.size(); ++i) {
       candidates.push_back(world_from_frame * fromPoseMsg(request.candidates.poses[i], i));
     }
@@ -191,12 +205,12 @@ void InformativenessServerRequests::answerNextBestView(const GetNextBestView::Re
   // The belief: the request's, else the latest estimate, else uniform.
   PlanningScene scene;
   scene.object_position = world_from_object.translation();
-  scene.occluder_radius = parameters_.occluder_radius;
+  scene.occluder_radius = settings.occluder_radius;
   if (request.use_belief) {
     if (!request.belief.header.frame_id.empty() &&
-        request.belief.header.frame_id != parameters_.fixed_frame) {
+        request.belief.header.frame_id != settings.fixed_frame) {
       throw Error("The request's belief is in frame '" + request.belief.header.frame_id +
-                  "', but beliefs must be in the fixed frame '" + parameters_.fixed_frame + "'.");
+                  "', but beliefs must be in the fixed frame '" + settings.fixed_frame + "'.");
     }
     scene.belief = fromBinghamMixtureMsg(request.belief);
     scene.orientation = mapEstimate(scene.belief);
@@ -217,7 +231,7 @@ void InformativenessServerRequests::answerNextBestView(const GetNextBestView::Re
   if (request.use_occluder) {
     const pcl::PointCloud<pcl::PointXYZ> occluder = toXyzCloud(request.occluder);
     const Eigen::Isometry3d world_from_occluder =
-        lookupFixedFrom(request.occluder.header.frame_id, "occluder points");
+        lookupFixedFrom(request.occluder.header.frame_id, settings.fixed_frame, "occluder points");
     for (const auto& p : occluder.points) {
       const Eigen::Vector3d point(p.x, p.y, p.z);
       if (point.allFinite()) scene.occluder_world.push_back(world_from_occluder * point);
@@ -231,11 +245,11 @@ void InformativenessServerRequests::answerNextBestView(const GetNextBestView::Re
   positions.reserve(candidates.size());
   for (const auto& pose : candidates) positions.push_back(pose.translation());
   NextBestViewOptions options;
-  options.samples_per_component = parameters_.belief_samples_per_component;
+  options.samples_per_component = settings.belief_samples_per_component;
   const std::vector<RankedCandidate> ranked =
       rankCandidates(*scorer_, positions, utility, scene, options);
 
-  response.ranked.header.frame_id = parameters_.fixed_frame;
+  response.ranked.header.frame_id = settings.fixed_frame;
   response.ranked.header.stamp = ros::Time::now();
   for (const RankedCandidate& candidate : ranked) {
     response.ranked.poses.push_back(toPoseMsg(candidates[candidate.index]));

@@ -50,6 +50,12 @@ class InformativenessServerRequests {
   void nextBestView(const view_direction_classification::GetNextBestView::Request& request,
                     view_direction_classification::GetNextBestView::Response& response);
 
+  // The settings of later requests: a reconfigure (cfg/InformativenessServer.cfg) changes the
+  // utility settings while the server runs. A request in flight finishes with the settings it
+  // started with.
+  void setParameters(const InformativenessServerRosParameters& parameters);
+  InformativenessServerRosParameters parameters() const;
+
   // Keeps an estimate as the belief of later requests. Throws vdc::Error (the belief kept so far
   // stays) for an estimate outside the fixed frame or an invalid mixture.
   void receiveEstimate(const view_direction_classification::BinghamMixture& msg);
@@ -60,13 +66,16 @@ class InformativenessServerRequests {
                      view_direction_classification::GetHeatmap::Response& response) const;
   void answerNextBestView(const view_direction_classification::GetNextBestView::Request& request,
                           view_direction_classification::GetNextBestView::Response& response);
-  // Identity for an empty frame or the fixed frame, else lookup_.
-  Eigen::Isometry3d lookupFixedFrom(const std::string& frame, const char* what) const;
+  // Identity for an empty frame or `fixed_frame`, else lookup_.
+  Eigen::Isometry3d lookupFixedFrom(const std::string& frame, const std::string& fixed_frame,
+                                    const char* what) const;
 
   std::shared_ptr<const ModelBundle> model_;
   std::unique_ptr<ViewUtilityScorer> scorer_;
-  InformativenessServerRosParameters parameters_;
   FrameLookup lookup_;
+
+  mutable std::mutex parameters_mutex_;  // reconfigure against the requests reading them
+  InformativenessServerRosParameters parameters_;
 
   std::mutex
       belief_mutex_;  // the estimate callback and the services (see InformativenessServerRos)

@@ -9,6 +9,7 @@
 
 #include "view_direction_classification/common/error.h"
 #include "view_direction_classification/ros/geometry_conversions.h"
+#include "view_direction_classification/ros/reconfigurable_parameters.h"
 #include "view_direction_classification/visualisation/heatmap_colours.h"
 
 namespace vdc {
@@ -59,12 +60,45 @@ InformativenessServerRos::InformativenessServerRos(ros::NodeHandle node,
       "next_best_view", &InformativenessServerRos::nextBestView, this);
   estimate_subscriber_ =
       node_.subscribe("estimate", 1, &InformativenessServerRos::receiveEstimate, this);
+  startReconfigureServer();
   ROS_INFO_NAMED(
       private_node_.getNamespace(),
       "Informativeness server: model %s (%d views, %zu surface points), object frame %s in %s",
       parameters_.model_path.c_str(), requests_->scorer().viewCount(),
       requests_->model().surface_points.size(), parameters_.object_frame.c_str(),
       parameters_.fixed_frame.c_str());
+}
+
+void InformativenessServerRos::startReconfigureServer() {
+  reconfigure_server_ = std::make_unique<dynamic_reconfigure::Server<InformativenessServerConfig>>(
+      reconfigure_mutex_, private_node_);
+  // The start-up parameters are authoritative: the server shows (and its first callback
+  // applies) what the node runs with, not the .cfg's defaults.
+  reconfigure_server_->updateConfig(toReconfigureConfig<InformativenessServerConfig>(
+      informativenessServerParameterTable(), parameters_));
+  reconfigure_server_->setCallback([this](InformativenessServerConfig& config,
+                                          std::uint32_t level) { reconfigure(config, level); });
+}
+
+// Runs in the reconfigure service's callback; the next request uses the new settings.
+void InformativenessServerRos::reconfigure(InformativenessServerConfig& config, std::uint32_t) {
+  try {
+    parameters_ = withReconfigureConfig(informativenessServerParameterTable(), parameters_, config);
+  } catch (const std::exception& error) {
+    ROS_WARN_NAMED(private_node_.getNamespace(),
+                   "%s: reconfigure refused, the previous settings stay: %s",
+                   private_node_.getNamespace().c_str(), error.what());
+    // The server stores and publishes what the callback leaves in `config`.
+    config = toReconfigureConfig<InformativenessServerConfig>(informativenessServerParameterTable(),
+                                                              parameters_);
+    return;
+  }
+  requests_->setParameters(parameters_);
+  ROS_INFO_NAMED(private_node_.getNamespace(),
+                 "%s: reconfigured (from the next request): default_utility %s, occluder_radius "
+                 "%g, belief_samples_per_component %d",
+                 private_node_.getNamespace().c_str(), config.default_utility.c_str(),
+                 config.occluder_radius, config.belief_samples_per_component);
 }
 
 void InformativenessServerRos::publishScoreTopics() {

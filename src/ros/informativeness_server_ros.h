@@ -1,5 +1,6 @@
 #pragma once
 
+#include <dynamic_reconfigure/server.h>
 #include <ros/ros.h>
 #include <sensor_msgs/PointCloud2.h>
 #include <tf2_ros/buffer.h>
@@ -11,20 +12,26 @@
 
 #include <Eigen/Geometry>
 
+#include <cstdint>
 #include <memory>
 #include <string>
 
 #include "informativeness_server_requests.h"
 #include "informativeness_server_ros_parameters.h"
+#include "view_direction_classification/InformativenessServerConfig.h"
 
 namespace vdc {
+
+// Generated from cfg/InformativenessServer.cfg.
+using InformativenessServerConfig = view_direction_classification::InformativenessServerConfig;
 
 // The informativeness server node (doc/nodes.md): serves a model bundle's view and
 // surface informativeness. Latched `~heatmap` (the surface set coloured by the global score) and
 // `~view_scores` (the training directions coloured by their view score), re-sent every
 // republish_period; services `~get_heatmap` and `~next_best_view`; tracks the belief published on
-// `estimate`. Parameters are documented in config/informativeness_server.yaml. Every bad request is
-// answered with success = false and a message; the server keeps serving.
+// `estimate`. Parameters are documented in config/informativeness_server.yaml; the utility settings
+// of cfg/InformativenessServer.cfg can be changed while it runs (dynamic_reconfigure). Every bad
+// request is answered with success = false and a message; the server keeps serving.
 class InformativenessServerRos {
  public:
   // Throws vdc::Error for a missing or invalid model bundle or invalid parameters.
@@ -36,6 +43,8 @@ class InformativenessServerRos {
   bool nextBestView(view_direction_classification::GetNextBestView::Request& request,
                     view_direction_classification::GetNextBestView::Response& response);
   void receiveEstimate(const view_direction_classification::BinghamMixture::ConstPtr& msg);
+  void startReconfigureServer();
+  void reconfigure(InformativenessServerConfig& config, std::uint32_t level);
 
   // fixed_frame <- frame through tf. Throws vdc::Error naming the frame if tf has no such
   // transform within tf_timeout.
@@ -60,6 +69,10 @@ class InformativenessServerRos {
   ros::WallTimer republish_timer_;
   ros::ServiceServer heatmap_service_, next_best_view_service_;
   ros::Subscriber estimate_subscriber_;
+  // dynamic_reconfigure's server (~set_parameters, ~parameter_updates). Its callback runs on the
+  // same queue as the services (the requests' own lock guards their settings anyway).
+  boost::recursive_mutex reconfigure_mutex_;
+  std::unique_ptr<dynamic_reconfigure::Server<InformativenessServerConfig>> reconfigure_server_;
 };
 
 }  // namespace vdc

@@ -16,9 +16,13 @@ class EstimatorReconfigure(unittest.TestCase):
     def setUpClass(cls):
         rospy.init_node("estimator_reconfigure_test")
         cls.client = Client(NODE, timeout=60)
+        # Taken before any test changes a value. Client.get_configuration answers from the last
+        # ~parameter_updates message it received, which can lag behind the server's state after
+        # an update: the tests below compare with what the server answers to their requests.
+        cls.start_up = cls.client.get_configuration(timeout=10)
 
     def test_start_up_parameters_are_shown_not_the_cfg_defaults(self):
-        config = self.client.get_configuration(timeout=10)
+        config = self.start_up
         self.assertAlmostEqual(config["kappa"], 18.4)
         self.assertEqual(config["max_components"], 20)
         # Parameters the launch left to config/estimator.yaml.
@@ -33,7 +37,9 @@ class EstimatorReconfigure(unittest.TestCase):
         self.client.update_configuration({"max_components": 20, "n_feat": 0})
 
     def test_a_value_the_rule_refuses_keeps_the_previous_one(self):
-        before = self.client.get_configuration(timeout=10)
+        # A known state, as the server answers it (not the client's possibly stale copy).
+        before = self.client.update_configuration({"min_weight": 0.001, "max_components": 20})
+        self.assertEqual(before["max_components"], 20)
         # In the .cfg's range [0, 1], but ~min_weight must lie in [0, 1).
         config = self.client.update_configuration({"min_weight": 1.0, "max_components": 7})
         self.assertAlmostEqual(config["min_weight"], before["min_weight"])

@@ -52,6 +52,20 @@ def fatal_lines(output):
     return [line for line in output.splitlines() if "FATAL" in line]
 
 
+# roscpp's own line when one of its calls to the master fails and it tries again: seen about one
+# run in six on a loaded machine, in registerSubscriber, i.e. while the node still registers its
+# subscriber after advertising the service this test waits for (the SIGINT that ends the node may
+# then interrupt the call, or the polled master answers late). It is transport, not the node's
+# start-up: the test still requires the service to be advertised and the exit status 0.
+_MASTER_RETRY = "Failed to contact master at"
+
+
+def error_lines(output):
+    """The FATAL and ERROR lines of a node's output, other than roscpp's master retries."""
+    return [line for line in output.splitlines()
+            if ("FATAL" in line or "ERROR" in line) and _MASTER_RETRY not in line]
+
+
 def load_config(name, yaml_file):
     """Puts a config/*.yaml file into the private namespace of node `name`."""
     for parameters, namespace in rosparam.load_file(config_file(yaml_file),
@@ -111,5 +125,5 @@ def assert_starts(test, node_type, yaml_file, service, *parameters):
     advertised, code, output = start_and_stop(node_type, service, *parameters, name=name)
     test.assertTrue(advertised, output)
     test.assertEqual(code, 0, output)
-    test.assertEqual([l for l in output.splitlines() if "FATAL" in l or "ERROR" in l], [], output)
+    test.assertEqual(error_lines(output), [], output)
     test.assertNotIn("does not read", output)
