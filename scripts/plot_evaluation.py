@@ -104,43 +104,53 @@ def plot_planners(summary, out_path):
 
 
 def stream_rows(errors_path, name, visibility):
-    """The stream's fused rows of one setting, per sequence in time order."""
+    """The stream's rows of one setting (fusions and dwell ends), per sequence in time order, as
+    (time, error, views fused)."""
     by_sequence = {}
     with open(errors_path, newline="") as handle:
         for row in csv.DictReader(handle):
             if row["planner"] == name and row["visibility"] == visibility and \
-                    row["event"] == "fused":
+                    row["event"] in ("fused", "dwell_end"):
                 by_sequence.setdefault(int(row["sequence"]), []).append(
-                    (float(row["time_s"]), float(row["map_error_deg"])))
-    return by_sequence
+                    (float(row["time_s"]), float(row["map_error_deg"]), int(row["views_fused"])))
+    return {s: sorted(rows) for s, rows in by_sequence.items()}
+
+
+def log_degree_axis(ax):
+    ax.set_yscale("log")
+    ax.set_ylim(0.5, 200)
+    ax.yaxis.set_major_locator(mticker.FixedLocator(DEGREE_TICKS))
+    ax.yaxis.set_major_formatter(mticker.FixedFormatter([str(t) for t in DEGREE_TICKS]))
+    ax.yaxis.set_minor_formatter(mticker.NullFormatter())
+    ax.set_ylabel("MAP error [deg]")
+    ax.grid(True, which="major", alpha=0.3)
 
 
 def plot_stream(summary, stream, errors_path, out_path):
     settings = stream["settings"]
     random = next((p for p in summary["planners"] if p["planner"] == "random"), None)
-    figure, axes = plt.subplots(len(settings), 2, figsize=(11, 4 * len(settings)), squeeze=False)
+    figure, axes = plt.subplots(len(settings), 3, figsize=(16, 4 * len(settings)), squeeze=False)
     for row, setting in enumerate(settings):
         visibility = setting["visibility"]
+        rows = stream_rows(errors_path, stream["name"], visibility)
         ax = axes[row][0]
-        end_time = 0.0
-        for sequence, samples in sorted(stream_rows(errors_path, stream["name"],
-                                                    visibility).items()):
-            times = [t for t, _ in samples]
-            errors = floor([e for _, e in samples])
-            ax.step(times, errors, where="post", linewidth=0.8, alpha=0.6)
-            end_time = max(end_time, times[-1])
-        ax.set_yscale("log")
-        ax.set_ylim(0.5, 200)
-        ax.yaxis.set_major_locator(mticker.FixedLocator(DEGREE_TICKS))
-        ax.yaxis.set_major_formatter(mticker.FixedFormatter([str(t) for t in DEGREE_TICKS]))
-        ax.yaxis.set_minor_formatter(mticker.NullFormatter())
+        for samples in rows.values():
+            ax.step([t for t, _, _ in samples], floor([e for _, e, _ in samples]), where="post",
+                    linewidth=0.8, alpha=0.6)
+        log_degree_axis(ax)
         ax.set_xlabel("stream time [s] (a step at every fused frame)")
-        ax.set_ylabel("MAP error [deg]")
-        ax.grid(True, which="major", alpha=0.3)
         ax.set_title(f"{stream['name']}, {visibility}: each sequence's error over time "
                      f"({100 * setting['featurised_fraction']:.1f} % of frames featurised)",
                      fontsize=9)
         ax = axes[row][1]
+        for samples in rows.values():
+            ax.plot([n for _, _, n in samples], floor([e for _, e, _ in samples]), marker=".",
+                    linewidth=0.8, alpha=0.6)
+        log_degree_axis(ax)
+        ax.set_xlabel("views fused")
+        ax.xaxis.set_major_locator(mticker.MaxNLocator(integer=True))
+        ax.set_title("each sequence's error against the views fused", fontsize=9)
+        ax = axes[row][2]
         medians = setting["median_error_deg_at_view_ends"]
         x = list(range(1, len(medians) + 1))
         ax.plot(x, floor(medians), marker="o", markersize=3,
