@@ -6,8 +6,13 @@ Writes OUT_DIR/evaluation_<planner>.png for each planner: the median MAP error o
 sequences after each view, one line per visibility setting, with the single-view PPF baseline's
 median error of each setting as a dashed horizontal line of the same colour. When several planners
 were run, OUT_DIR/evaluation_planners.png compares them, one panel per visibility setting.
+With camera streams (`--stream-rate`), OUT_DIR/evaluation_<stream>.png shows, per visibility
+setting, each sequence's MAP error against the stream's time (a step at every fused frame, from
+OUT_DIR/errors.csv beside the summary) with the median at each view's end, and the median at each
+view's end against the random planner's one cloud per view.
 The y axis is logarithmic (errors span from ~1 to 180 degrees) with plain degree tick labels.
 """
+import csv
 import json
 import pathlib
 import sys
@@ -98,6 +103,72 @@ def plot_planners(summary, out_path):
     plt.close(figure)
 
 
+def stream_rows(errors_path, name, visibility):
+    """The stream's rows of one setting (fusions and dwell ends), per sequence in time order, as
+    (time, error, views fused)."""
+    by_sequence = {}
+    with open(errors_path, newline="") as handle:
+        for row in csv.DictReader(handle):
+            if row["planner"] == name and row["visibility"] == visibility and \
+                    row["event"] in ("fused", "dwell_end"):
+                by_sequence.setdefault(int(row["sequence"]), []).append(
+                    (float(row["time_s"]), float(row["map_error_deg"]), int(row["views_fused"])))
+    return {s: sorted(rows) for s, rows in by_sequence.items()}
+
+
+def log_degree_axis(ax):
+    ax.set_yscale("log")
+    ax.set_ylim(0.5, 200)
+    ax.yaxis.set_major_locator(mticker.FixedLocator(DEGREE_TICKS))
+    ax.yaxis.set_major_formatter(mticker.FixedFormatter([str(t) for t in DEGREE_TICKS]))
+    ax.yaxis.set_minor_formatter(mticker.NullFormatter())
+    ax.set_ylabel("MAP error [deg]")
+    ax.grid(True, which="major", alpha=0.3)
+
+
+def plot_stream(summary, stream, errors_path, out_path):
+    settings = stream["settings"]
+    random = next((p for p in summary["planners"] if p["planner"] == "random"), None)
+    figure, axes = plt.subplots(len(settings), 3, figsize=(16, 4 * len(settings)), squeeze=False)
+    for row, setting in enumerate(settings):
+        visibility = setting["visibility"]
+        rows = stream_rows(errors_path, stream["name"], visibility)
+        ax = axes[row][0]
+        for samples in rows.values():
+            ax.step([t for t, _, _ in samples], floor([e for _, e, _ in samples]), where="post",
+                    linewidth=0.8, alpha=0.6)
+        log_degree_axis(ax)
+        ax.set_xlabel("stream time [s] (a step at every fused frame)")
+        ax.set_title(f"{stream['name']}, {visibility}: each sequence's error over time "
+                     f"({100 * setting['featurised_fraction']:.1f} % of frames featurised)",
+                     fontsize=9)
+        ax = axes[row][1]
+        for samples in rows.values():
+            ax.plot([n for _, _, n in samples], floor([e for _, e, _ in samples]), marker=".",
+                    linewidth=0.8, alpha=0.6)
+        log_degree_axis(ax)
+        ax.set_xlabel("views fused")
+        ax.xaxis.set_major_locator(mticker.MaxNLocator(integer=True))
+        ax.set_title("each sequence's error against the views fused", fontsize=9)
+        ax = axes[row][2]
+        medians = setting["median_error_deg_at_view_ends"]
+        x = list(range(1, len(medians) + 1))
+        ax.plot(x, floor(medians), marker="o", markersize=3,
+                label=f"{stream['name']} at each view's end")
+        if random:
+            one = next((s for s in random["settings"] if s["visibility"] == visibility), None)
+            if one:
+                ax.plot(x, floor(one["median_error_deg"][:len(x)]), marker="s", markersize=3,
+                        label="random, one cloud per view")
+        degree_axis(ax, len(x))
+        ax.set_title(f"median over {summary['sequences']} sequences; truth inside cone90 at "
+                     f"the end: {setting['final_inside_cone90_fraction']:.2f}", fontsize=9)
+        ax.legend(fontsize=8)
+    figure.tight_layout()
+    figure.savefig(out_path, dpi=110)
+    plt.close(figure)
+
+
 def main(summary_path, out_dir):
     summary = json.loads(pathlib.Path(summary_path).read_text())
     out_dir = pathlib.Path(out_dir)
@@ -109,6 +180,11 @@ def main(summary_path, out_dir):
     if len(summary["planners"]) > 1:
         path = out_dir / "evaluation_planners.png"
         plot_planners(summary, path)
+        written.append(path)
+    errors_path = pathlib.Path(summary_path).parent / "errors.csv"
+    for stream in summary.get("streams", []):
+        path = out_dir / f"evaluation_{stream['name']}.png"
+        plot_stream(summary, stream, errors_path, path)
         written.append(path)
     for path in written:
         print(f"wrote {path}")

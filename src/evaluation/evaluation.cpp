@@ -31,26 +31,10 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
       .count();
 }
 
-std::vector<double> radiiOf(const EvaluationSettings& settings) {
-  if (settings.visibility_radii.empty()) return {kAllVisible};
-  return settings.visibility_radii;
-}
-
-void checkAnchors(const std::vector<Eigen::Vector3d>& anchors, const EvaluationSettings& settings) {
-  bool cropped = false;
-  for (const double r : radiiOf(settings)) cropped = cropped || r != kAllVisible;
-  if (cropped && anchors.empty()) {
-    throw Error("the occlusion settings need at least one visibility anchor point");
-  }
-  for (const auto& anchor : anchors) {
-    if (!anchor.allFinite()) throw Error("a visibility anchor point is not finite");
-  }
-}
-
 std::vector<double> visibleFractions(const TriangleMesh& mesh,
                                      const std::vector<Eigen::Vector3d>& anchors,
                                      const EvaluationSettings& settings) {
-  const std::vector<double> radii = radiiOf(settings);
+  const std::vector<double> radii = visibilityRadii(settings);
   std::vector<double> fractions(radii.size(), 1.0);
   bool cropped = false;
   for (const double r : radii) cropped = cropped || r != kAllVisible;
@@ -96,6 +80,8 @@ int chooseCandidate(EvaluationPlanner planner, const ViewUtilityScorer* scorer,
 
 struct RunOutput {
   std::vector<double> errors;
+  std::vector<int> views_fused;
+  std::vector<double> cone90_deg;
   int skipped = 0;
   double planning_ms = 0, map_ms = 0;
   UpdateTiming stage_ms;  // sums
@@ -129,6 +115,31 @@ void checkEvaluationSettings(const EvaluationSettings& s) {
   if (s.samples_per_component < 0) {
     throw Error("samples per component must not be negative, got " +
                 std::to_string(s.samples_per_component));
+  }
+  if (!(s.stream_rate_hz >= 0.0) || !std::isfinite(s.stream_rate_hz)) {
+    throw Error("the stream rate must be >= 0 and finite (0: no stream), got " +
+                std::to_string(s.stream_rate_hz) + " Hz");
+  }
+  if (!(s.stream_dwell_s >= 0.0) || !std::isfinite(s.stream_dwell_s)) {
+    throw Error("the stream's dwell time must be >= 0 and finite, got " +
+                std::to_string(s.stream_dwell_s) + " s");
+  }
+}
+
+std::vector<double> visibilityRadii(const EvaluationSettings& settings) {
+  if (settings.visibility_radii.empty()) return {kAllVisible};
+  return settings.visibility_radii;
+}
+
+void checkVisibilityAnchors(const std::vector<Eigen::Vector3d>& anchors,
+                            const EvaluationSettings& settings) {
+  bool cropped = false;
+  for (const double r : visibilityRadii(settings)) cropped = cropped || r != kAllVisible;
+  if (cropped && anchors.empty()) {
+    throw Error("the occlusion settings need at least one visibility anchor point");
+  }
+  for (const auto& anchor : anchors) {
+    if (!anchor.allFinite()) throw Error("a visibility anchor point is not finite");
   }
 }
 
@@ -215,13 +226,19 @@ Eigen::VectorXd SettingErrors::medianPerView() const {
   return medians;
 }
 
+Eigen::VectorXd SettingErrors::insideCone90PerView() const {
+  if (cone90_deg.size() != errors_deg.size() || errors_deg.rows() == 0) return {};
+  const Eigen::ArrayXXd inside = (errors_deg.array() <= cone90_deg.array()).cast<double>();
+  return inside.colwise().mean().transpose();
+}
+
 EvaluationResult evaluateEstimator(std::shared_ptr<const ModelBundle> model,
                                    const TriangleMesh& mesh,
                                    const std::vector<Eigen::Vector3d>& anchors,
                                    EvaluationPlanner planner, const EvaluationSettings& settings,
                                    const ProgressCallback& progress) {
   checkEvaluationSettings(settings);
-  checkAnchors(anchors, settings);
+  checkVisibilityAnchors(anchors, settings);
   if (!model) throw Error("the evaluation needs a model bundle");
   // Fails early (not inside the threads) for bad estimator parameters.
   { const OrientationEstimator check(model, settings.estimator); }
@@ -230,7 +247,7 @@ EvaluationResult evaluateEstimator(std::shared_ptr<const ModelBundle> model,
   if (planner != EvaluationPlanner::kRandom) {
     scorer = std::make_unique<ViewUtilityScorer>(model);
   }
-  const std::vector<double> radii = radiiOf(settings);
+  const std::vector<double> radii = visibilityRadii(settings);
   const std::vector<double> fractions = visibleFractions(mesh, anchors, settings);
 
   const int settings_count = static_cast<int>(radii.size());
@@ -274,6 +291,8 @@ EvaluationResult evaluateEstimator(std::shared_ptr<const ModelBundle> model,
         const Eigen::Vector4d map = estimator.mapOrientation();
         out.map_ms += millisecondsSince(map_start);
         out.errors.push_back(rotationErrorDeg(map, sequence.world_from_object));
+        out.views_fused.push_back(estimator.viewsFused());
+        out.cone90_deg.push_back(estimator.spread().cone90 * 180.0 / M_PI);
 #pragma omp critical(vdc_evaluation_progress)
         reportProgress(progress, stage, ++done_views, total_views);
       }
@@ -293,10 +312,15 @@ EvaluationResult evaluateEstimator(std::shared_ptr<const ModelBundle> model,
     setting.radius = radii[static_cast<std::size_t>(k)];
     setting.visible_fraction = fractions[static_cast<std::size_t>(k)];
     setting.errors_deg.resize(settings.sequences, settings.views);
+    setting.views_fused.resize(settings.sequences, settings.views);
+    setting.cone90_deg.resize(settings.sequences, settings.views);
     for (int s = 0; s < settings.sequences; ++s) {
       const RunOutput& out = outputs[static_cast<std::size_t>(s * settings_count + k)];
       for (int v = 0; v < settings.views; ++v) {
-        setting.errors_deg(s, v) = out.errors[static_cast<std::size_t>(v)];
+        const auto view = static_cast<std::size_t>(v);
+        setting.errors_deg(s, v) = out.errors[view];
+        setting.views_fused(s, v) = out.views_fused[view];
+        setting.cone90_deg(s, v) = out.cone90_deg[view];
       }
       setting.skipped_views += out.skipped;
       planning_ms += out.planning_ms;
@@ -320,10 +344,10 @@ EvaluationResult evaluateSingleView(const SingleViewMethod& method, const std::s
                                     const EvaluationSettings& settings,
                                     const ProgressCallback& progress) {
   checkEvaluationSettings(settings);
-  checkAnchors(anchors, settings);
+  checkVisibilityAnchors(anchors, settings);
   if (!method) throw Error("the single-view evaluation needs a method");
   const DepthRenderer renderer(mesh, intrinsics);
-  const std::vector<double> radii = radiiOf(settings);
+  const std::vector<double> radii = visibilityRadii(settings);
   const std::vector<double> fractions = visibleFractions(mesh, anchors, settings);
   const std::size_t total_views = radii.size() * settings.sequences * settings.views;
   const std::string stage = "evaluating " + name;

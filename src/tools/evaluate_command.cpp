@@ -1,6 +1,7 @@
 // `vdc evaluate --model B.h5 --mesh M --out DIR`: the paper's figure-4 protocol (doc/method.md
 // section 11) with the online estimator, per planner and visibility setting, optionally beside the
-// single-view PPF baseline on the same views. Writes DIR/errors.csv, DIR/summary.json and, through
+// single-view PPF baseline on the same views, and with --stream-rate the random views as camera
+// streams (evaluation/stream_evaluation.h). Writes DIR/errors.csv, DIR/summary.json and, through
 // scripts/plot_evaluation.py, one PNG per planner (and one comparing planners).
 // The options are declared in evaluation_options.cpp, the files written by evaluation_csv.cpp
 // and evaluation_summary.cpp, the terminal lines by evaluation_console.cpp.
@@ -72,7 +73,7 @@ fs::path writeErrorsCsvFile(const EvaluationReport& report, const std::string& o
   std::ofstream csv(path);
   std::vector<EvaluationResult> rows = report.results;
   if (report.baseline) rows.push_back(report.baseline->result);
-  writeErrorsCsv(csv, rows);
+  writeErrorsCsv(csv, rows, report.streams);
   if (!csv) throw Error("cannot write " + path.string());
   return path;
 }
@@ -108,6 +109,10 @@ void runEvaluate(const EvaluateOptions& options) {
   if (options.baseline) {
     report.baseline = runPpfBaseline(mesh, *model, request, report.settings, report_progress);
   }
+  if (report.settings.stream_rate_hz > 0.0) {
+    report.streams.push_back(
+        evaluateStream(model, mesh, request.anchors, report.settings, report_progress));
+  }
 
   const fs::path csv_path = writeErrorsCsvFile(report, options.out_dir);
   report.seconds_total = secondsSince(start);
@@ -128,7 +133,8 @@ void addEvaluateCommand(CLI::App& app) {
   auto* evaluate = app.add_subcommand(
       "evaluate",
       "the paper's figure-4 protocol: median MAP error after each view of random view sequences, "
-      "per visibility setting and planner, optionally beside a single-view PPF baseline");
+      "per visibility setting and planner, optionally beside a single-view PPF baseline and as "
+      "camera streams");
   addEvaluateOptions(*evaluate, *options);
   evaluate->callback([options] { runEvaluate(*options); });
 }

@@ -22,6 +22,8 @@ void printTimings(const EvaluationResult& result) {
 }
 
 // The median after views 1, 5, 10, 20 and the last, and when it stays under kConvergedDeg.
+void printInsideCone90(const Eigen::VectorXd& fractions);
+
 void printSettingMedians(const SettingErrors& setting, int views) {
   const Eigen::VectorXd medians = setting.medianPerView();
   std::printf("  %-5s (%5.1f %% visible): median error", visibilityLabel(setting.radius).c_str(),
@@ -37,6 +39,42 @@ void printSettingMedians(const SettingErrors& setting, int views) {
     std::printf(" deg; < %.0f deg from view %d on\n", kConvergedDeg, *converged);
   } else {
     std::printf(" deg; never < %.0f deg to the end\n", kConvergedDeg);
+  }
+  printInsideCone90(setting.insideCone90PerView());
+}
+
+// The calibration figure after each view (or at each view's end of a stream).
+void printInsideCone90(const Eigen::VectorXd& fractions) {
+  if (fractions.size() == 0) return;
+  std::printf("        truth inside cone90 after view 1..%d:", static_cast<int>(fractions.size()));
+  for (Eigen::Index v = 0; v < fractions.size(); ++v) std::printf(" %.2f", fractions(v));
+  std::printf("\n");
+}
+
+void printStream(const StreamEvaluationResult& stream) {
+  std::printf(
+      "%s: render %.1f ms/frame; update %.2f ms per frame not featurised, %.1f ms per featurised "
+      "frame\n",
+      stream.name.c_str(), stream.mean_render_ms, stream.mean_unfeaturised_update_ms,
+      stream.mean_featurised_update_ms);
+  for (const auto& setting : stream.settings) {
+    int frames = 0, featurised = 0, inside = 0;
+    double seconds = 0.0;
+    for (const auto& sequence : setting.sequences) {
+      frames += sequence.frames;
+      featurised += sequence.featurised;
+      seconds += sequence.duration_s;
+      inside += !sequence.view_ends.empty() && sequence.view_ends.back().insideCone90();
+    }
+    const Eigen::VectorXd medians = setting.medianAtViewEnds();
+    std::printf("  %-5s %d frames, %d featurised (%.1f %%, %.2f per s of stream); median error",
+                visibilityLabel(setting.radius).c_str(), frames, featurised,
+                frames > 0 ? 100.0 * featurised / frames : 0.0,
+                seconds > 0 ? featurised / seconds : 0.0);
+    for (Eigen::Index v = 0; v < medians.size(); ++v) std::printf(" %.1f", medians(v));
+    std::printf(" deg at view ends; truth inside cone90 at the end: %d of %zu\n", inside,
+                setting.sequences.size());
+    printInsideCone90(setting.insideCone90AtViewEnds());
   }
 }
 
@@ -56,9 +94,14 @@ void printEvaluationStart(const std::string& model_path, const std::string& mesh
                           const EvaluationSettings& settings) {
   std::fprintf(stderr,
                "evaluating %s on %s: %d sequences x %d views, %zu visibility settings, seed %u, "
-               "noise %s\n",
+               "noise %s",
                model_path.c_str(), mesh_path.c_str(), settings.sequences, settings.views,
                settings.visibility_radii.size(), settings.seed, settings.noise ? "on" : "off");
+  if (settings.stream_rate_hz > 0.0) {
+    std::fprintf(stderr, ", and as %g Hz streams (%g s at each view)", settings.stream_rate_hz,
+                 settings.stream_dwell_s);
+  }
+  std::fprintf(stderr, "\n");
 }
 
 void printEvaluationReport(const EvaluationReport& report) {
@@ -67,6 +110,7 @@ void printEvaluationReport(const EvaluationReport& report) {
     for (const auto& setting : result.settings) printSettingMedians(setting, report.settings.views);
   }
   if (report.baseline) printBaseline(*report.baseline);
+  for (const auto& stream : report.streams) printStream(stream);
 }
 
 }  // namespace vdc::tools

@@ -77,6 +77,34 @@ CLI::Option* addSetting(CLI::App& command, EvaluateOptions& options, const std::
   return command.add_option(flag, field(options.settings), help);
 }
 
+// A CLI validator for a number >= 0 that is finite (CLI::Range lets NaN through).
+CLI::Validator nonNegativeFinite() {
+  return CLI::Validator(
+      [](const std::string& text) -> std::string {
+        char* end = nullptr;
+        const double value = std::strtod(text.c_str(), &end);
+        if (end == text.c_str() || *end != '\0' || !std::isfinite(value) || value < 0.0) {
+          return "must be a finite number >= 0, got '" + text + "'";
+        }
+        return "";
+      },
+      "");
+}
+
+// A CLI validator for a finite number (CLI's own conversion accepts "nan" and "inf").
+CLI::Validator finiteNumber() {
+  return CLI::Validator(
+      [](const std::string& text) -> std::string {
+        char* end = nullptr;
+        const double value = std::strtod(text.c_str(), &end);
+        if (end == text.c_str() || *end != '\0' || !std::isfinite(value)) {
+          return "must be a finite number, got '" + text + "'";
+        }
+        return "";
+      },
+      "");
+}
+
 }  // namespace
 
 void addEvaluateOptions(CLI::App& command, EvaluateOptions& options) {
@@ -157,6 +185,34 @@ void addEvaluateOptions(CLI::App& command, EvaluateOptions& options) {
       "belief components below this fraction of the heaviest are dropped")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 0.5));
+  // Frame selection (estimation/frame_selection.h), in radians as config/estimator.yaml.
+  addSetting(
+      command, options, "--min-view-separation",
+      [](auto& s) -> auto& { return s.estimator.selection.min_view_separation; },
+      "/estimator/min_view_separation",
+      "[rad] a frame is a new view this far from every fused one; < 0: half the view spacing")
+      ->capture_default_str()
+      ->check(finiteNumber());
+  addSetting(
+      command, options, "--independent-view-separation",
+      [](auto& s) -> auto& { return s.estimator.selection.independent_view_separation; },
+      "/estimator/independent_view_separation",
+      "[rad] views this far apart are independent evidence (nearer: tempered); < 0: the view "
+      "spacing; 0: no tempering")
+      ->capture_default_str()
+      ->check(finiteNumber());
+  // Camera streams (evaluation/stream_evaluation.h).
+  addSetting(
+      command, options, "--stream-rate", [](auto& s) -> auto& { return s.stream_rate_hz; },
+      "/stream_rate_hz",
+      "[Hz] also run each sequence's views as a camera stream at this frame rate; 0: no stream")
+      ->capture_default_str()
+      ->check(nonNegativeFinite());
+  addSetting(
+      command, options, "--dwell", [](auto& s) -> auto& { return s.stream_dwell_s; },
+      "/stream_dwell_s", "[s] the stream's camera stays this long at each view")
+      ->capture_default_str()
+      ->check(nonNegativeFinite());
   command.add_flag("--baseline", options.baseline,
                    "also run the single-view PPF baseline (PCL) on the random planner's views");
   command.add_flag("--no-noise", options.no_noise, "render the views without sensor noise");

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "view_direction_classification/evaluation/evaluation.h"
+#include "view_direction_classification/evaluation/stream_evaluation.h"
 
 namespace vdc::tools {
 
@@ -23,6 +24,7 @@ struct EvaluationReport {
   nlohmann::json recorded_settings;       // recordedSettings of the options
   std::vector<EvaluationResult> results;  // one per planner
   std::optional<BaselineResult> baseline;
+  std::vector<StreamEvaluationResult> streams;  // --stream-rate: the random views as a stream
   double seconds_total = 0;
 };
 

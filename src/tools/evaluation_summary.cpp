@@ -10,6 +10,10 @@ namespace vdc::tools {
 
 namespace {
 
+std::vector<double> toVector(const Eigen::VectorXd& values) {
+  return std::vector<double>(values.data(), values.data() + values.size());
+}
+
 nlohmann::json settingSummary(const SettingErrors& setting, int views) {
   const Eigen::VectorXd medians = setting.medianPerView();
   nlohmann::json after = nlohmann::json::object();
@@ -24,7 +28,62 @@ nlohmann::json settingSummary(const SettingErrors& setting, int views) {
       {"skipped_views", setting.skipped_views},
       {"median_error_deg", std::vector<double>(medians.data(), medians.data() + medians.size())},
       {"median_error_after_views", after},
-      {"views_until_median_below_5deg", converged ? nlohmann::json(*converged) : nlohmann::json()}};
+      {"views_until_median_below_5deg", converged ? nlohmann::json(*converged) : nlohmann::json()},
+      {"inside_cone90_fraction", toVector(setting.insideCone90PerView())}};
+}
+
+double medianOf(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+// A stream setting's figures at the end of the stream (its last view's dwell) and over it.
+nlohmann::json streamSettingSummary(const StreamSettingResult& setting) {
+  std::vector<double> final_error, final_cone, views_fused, featurised_per_s;
+  int frames = 0, featurised = 0, fused = 0, not_novel = 0, skipped = 0, inside = 0;
+  for (const StreamSequenceResult& sequence : setting.sequences) {
+    frames += sequence.frames;
+    featurised += sequence.featurised;
+    fused += sequence.fused;
+    not_novel += sequence.not_novel;
+    skipped += sequence.skipped;
+    featurised_per_s.push_back(sequence.featurisedPerSecond());
+    if (sequence.view_ends.empty()) continue;
+    const StreamSample& last = sequence.view_ends.back();
+    final_error.push_back(last.map_error_deg);
+    final_cone.push_back(last.cone90_deg);
+    views_fused.push_back(last.views_fused);
+    inside += last.insideCone90();
+  }
+  const double sequences = static_cast<double>(setting.sequences.size());
+  return {{"visibility", visibilityLabel(setting.radius)},
+          {"median_error_deg_at_view_ends", toVector(setting.medianAtViewEnds())},
+          {"inside_cone90_fraction_at_view_ends", toVector(setting.insideCone90AtViewEnds())},
+          {"final_median_error_deg", medianOf(final_error)},
+          {"final_median_cone90_deg", medianOf(final_cone)},
+          {"final_inside_cone90_fraction", sequences > 0 ? inside / sequences : 0.0},
+          {"final_median_views_fused", medianOf(views_fused)},
+          {"frames", frames},
+          {"frames_featurised", featurised},
+          {"featurised_fraction", frames > 0 ? static_cast<double>(featurised) / frames : 0.0},
+          {"median_featurised_per_s", medianOf(featurised_per_s)},
+          {"frames_fused", fused},
+          {"frames_not_novel", not_novel},
+          {"frames_skipped", skipped}};
+}
+
+nlohmann::json streamSummary(const StreamEvaluationResult& stream, const EvaluationSettings& used) {
+  nlohmann::json settings = nlohmann::json::array();
+  for (const auto& setting : stream.settings) settings.push_back(streamSettingSummary(setting));
+  return {{"name", stream.name},
+          {"rate_hz", stream.rate_hz},
+          {"dwell_s", used.stream_dwell_s},
+          {"render_ms_per_frame", stream.mean_render_ms},
+          {"update_ms_per_unfeaturised_frame", stream.mean_unfeaturised_update_ms},
+          {"update_ms_per_featurised_frame", stream.mean_featurised_update_ms},
+          {"settings", settings}};
 }
 
 nlohmann::json plannerSummary(const EvaluationResult& result, int views) {
@@ -79,6 +138,11 @@ nlohmann::json evaluationSummary(const EvaluationReport& report) {
   summary["planners"] = planners;
   summary["baseline"] =
       report.baseline ? baselineSummary(*report.baseline) : nlohmann::json(nullptr);
+  nlohmann::json streams = nlohmann::json::array();
+  for (const auto& stream : report.streams) {
+    streams.push_back(streamSummary(stream, report.settings));
+  }
+  summary["streams"] = streams;
   return summary;
 }
 

@@ -66,6 +66,27 @@ TEST(OrientationEstimatorStream, AStillCameraFusesItsFirstFrameOnlyAndTheBeliefS
   EXPECT_EQ(estimator.entropy(), first_entropy);
 }
 
+// Issue 14's target: a camera that never moves for 60 s leaves the belief no narrower than its
+// first view did (noisy copies of one view are not new evidence). Every frame has fresh noise.
+TEST(OrientationEstimatorStream,
+     SixtySecondsOfAStillCameraAt30HzLeaveTheBeliefAsWideAsItsFirstView) {
+  OrientationEstimator estimator(test::quickMugModel(), {});
+  CameraStream stream(test::mugScene(false, false));
+  double first_cone90 = 0.0, first_entropy = 0.0;
+  for (int k = 0; k <= 60 * 30; ++k) {
+    const auto [cloud, world_from_camera] = stream.frame(around(1.2));
+    const ViewUpdate update = estimator.update(cloud, world_from_camera, k * kFrameSeconds);
+    ASSERT_NE(update.outcome, FrameOutcome::kSkipped) << "frame " << k << update.skip_reason;
+    if (k == 0) {
+      first_cone90 = estimator.spread().cone90;
+      first_entropy = estimator.entropy();
+    }
+  }
+  EXPECT_EQ(estimator.viewsFused(), 1);
+  EXPECT_GE(estimator.spread().cone90, first_cone90);
+  EXPECT_GE(estimator.entropy(), first_entropy);
+}
+
 TEST(OrientationEstimatorStream, AnArcFusesANewViewEachMinViewSeparationWithTemperedLikelihood) {
   OrientationEstimator estimator(test::quickMugModel(), {});
   CameraStream stream(test::mugScene(false, false));

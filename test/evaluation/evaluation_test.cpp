@@ -35,7 +35,30 @@ void expectErrorsInRange(const EvaluationResult& result, const EvaluationSetting
     const Eigen::VectorXd medians = setting.medianPerView();
     ASSERT_EQ(medians.size(), settings.views);
     EXPECT_TRUE(medians.allFinite());
+    // The trust signals after each view: at most one new view each, a cone within [0, 180].
+    ASSERT_EQ(setting.views_fused.rows(), settings.sequences);
+    ASSERT_EQ(setting.views_fused.cols(), settings.views);
+    ASSERT_EQ(setting.cone90_deg.rows(), settings.sequences);
+    ASSERT_EQ(setting.cone90_deg.cols(), settings.views);
+    for (int v = 0; v < settings.views; ++v) {
+      EXPECT_LE(setting.views_fused.col(v).maxCoeff(), v + 1);
+    }
+    EXPECT_GE(setting.views_fused.col(0).minCoeff(), 0);
+    EXPECT_GT(setting.cone90_deg.minCoeff(), 0.0);
+    EXPECT_LE(setting.cone90_deg.maxCoeff(), 180.0);
+    EXPECT_EQ(setting.insideCone90PerView().size(), settings.views);
   }
+}
+
+TEST(EvaluationTest, TheCalibrationFigureIsTheFractionOfSequencesWithTheErrorWithinCone90) {
+  SettingErrors setting;
+  setting.errors_deg.resize(4, 2);
+  setting.errors_deg << 10, 1, 20, 2, 30, 3, 40, 50;
+  setting.cone90_deg.resize(4, 2);
+  setting.cone90_deg << 15, 5, 20, 1, 25, 5, 45, 5;
+  // View 1: 10 <= 15, 20 <= 20, 40 <= 45 inside; view 2: 1 <= 5 and 3 <= 5 inside.
+  EXPECT_TRUE(setting.insideCone90PerView().isApprox(Eigen::Vector2d(0.75, 0.5)));
+  EXPECT_EQ(SettingErrors().insideCone90PerView().size(), 0) << "no trust signals, no figure";
 }
 
 TEST(EvaluationTest, RandomPlannerGivesFiniteErrorsBetweenZeroAnd180PerSettingSequenceAndView) {

@@ -36,7 +36,9 @@ TEST(EvaluationReportTest,
   std::istringstream lines(csv.str());
   std::string line;
   ASSERT_TRUE(std::getline(lines, line));
-  EXPECT_EQ(line, "planner,visibility,sequence,view,map_error_deg");
+  EXPECT_EQ(line,
+            "planner,visibility,sequence,view,map_error_deg,event,time_s,views_fused,cone90_deg,"
+            "inside_cone90");
   int rows = 0;
   std::set<std::string> visibilities, planners;
   while (std::getline(lines, line)) {
@@ -44,7 +46,8 @@ TEST(EvaluationReportTest,
     std::vector<std::string> fields;
     std::istringstream row(line);
     for (std::string field; std::getline(row, field, ',');) fields.push_back(field);
-    ASSERT_EQ(fields.size(), 5u) << line;
+    if (line.back() == ',') fields.push_back("");  // getline drops a last empty field
+    ASSERT_EQ(fields.size(), 10u) << line;
     planners.insert(fields[0]);
     visibilities.insert(fields[1]);
     EXPECT_GE(std::stoi(fields[3]), 1);
@@ -66,10 +69,49 @@ TEST(EvaluationReportTest, ErrorsCsvRowsNameTheirSequenceFromZeroAndViewFromOne)
   result.settings.push_back(setting);
   std::ostringstream csv;
   writeErrorsCsv(csv, {result});
+  // Without trust signals (a single-view method) their cells are empty.
   EXPECT_EQ(csv.str(),
-            "planner,visibility,sequence,view,map_error_deg\n"
-            "random,0.05,0,1,1.2346\n"
-            "random,0.05,1,1,90.0000\n");
+            "planner,visibility,sequence,view,map_error_deg,event,time_s,views_fused,cone90_deg,"
+            "inside_cone90\n"
+            "random,0.05,0,1,1.2346,view,,,,\n"
+            "random,0.05,1,1,90.0000,view,,,,\n");
+}
+
+TEST(EvaluationReportTest, ErrorsCsvGivesTheEstimatorsTrustSignalsAndWhetherTheTruthIsInside) {
+  EvaluationResult result;
+  result.planner = "random";
+  SettingErrors setting;
+  setting.errors_deg.resize(1, 2);
+  setting.errors_deg << 100.0, 8.0;
+  setting.views_fused.resize(1, 2);
+  setting.views_fused << 1, 2;
+  setting.cone90_deg.resize(1, 2);
+  setting.cone90_deg << 150.0, 7.5;
+  result.settings.push_back(setting);
+  std::ostringstream csv;
+  writeErrorsCsv(csv, {result});
+  EXPECT_EQ(csv.str().substr(csv.str().find('\n') + 1),
+            "random,all,0,1,100.0000,view,,1,150.0000,1\n"
+            "random,all,0,2,8.0000,view,,2,7.5000,0\n");
+}
+
+TEST(EvaluationReportTest, ErrorsCsvGivesAStreamsFusionsThenItsViewEndsWithTheirTimes) {
+  StreamEvaluationResult stream;
+  stream.name = "stream_30hz";
+  StreamSettingResult setting;
+  setting.radius = 0.06;
+  StreamSequenceResult sequence;
+  sequence.fusions = {{0.0, 1, 1, 120.0, 160.0}, {3.1, 1, 2, 20.0, 25.0}};
+  sequence.view_ends = {{2.0, 1, 1, 120.0, 160.0}, {6.5, 2, 2, 20.0, 25.0}};
+  setting.sequences = {sequence};
+  stream.settings = {setting};
+  std::ostringstream csv;
+  writeErrorsCsv(csv, {}, {stream});
+  EXPECT_EQ(csv.str().substr(csv.str().find('\n') + 1),
+            "stream_30hz,0.06,0,1,120.0000,fused,0.0000,1,160.0000,1\n"
+            "stream_30hz,0.06,0,1,20.0000,fused,3.1000,2,25.0000,1\n"
+            "stream_30hz,0.06,0,1,120.0000,dwell_end,2.0000,1,160.0000,1\n"
+            "stream_30hz,0.06,0,2,20.0000,dwell_end,6.5000,2,25.0000,1\n");
 }
 
 TEST(EvaluationReportTest, VisibilityLabelsRoundTripAndBadOnesAreRefused) {
@@ -109,7 +151,8 @@ class EvaluateOptionsTest : public ::testing::Test {
 TEST_F(EvaluateOptionsTest, SummaryRecordsEverySettingARunUsedUnderItsKey) {
   parse(
       "--sequences 3 --views 4 --candidates 9 --seed 5 --distance 0.5 --kappa 2.5 --n-feat 7 "
-      "--max-components 11 --min-weight 0.01 --belief-weight-floor 0.001 --no-noise");
+      "--max-components 11 --min-weight 0.01 --belief-weight-floor 0.001 --no-noise "
+      "--min-view-separation 0.2 --independent-view-separation 0.5 --stream-rate 15 --dwell 3");
   ModelBundle model;
   model.parameters.distance = 0.7;
   const EvaluationSettings used =
@@ -120,12 +163,16 @@ TEST_F(EvaluateOptionsTest, SummaryRecordsEverySettingARunUsedUnderItsKey) {
                                    {"seed", 5u},
                                    {"distance_m", 0.5},
                                    {"noise", false},
+                                   {"stream_rate_hz", 15.0},
+                                   {"stream_dwell_s", 3.0},
                                    {"estimator",
                                     {{"n_feat", 7},
                                      {"kappa", 2.5},
                                      {"max_components", 11},
                                      {"min_weight", 0.01},
-                                     {"belief_weight_floor", 0.001}}}};
+                                     {"belief_weight_floor", 0.001},
+                                     {"min_view_separation", 0.2},
+                                     {"independent_view_separation", 0.5}}}};
   EXPECT_EQ(recordedSettings(options_, used), expected);
 }
 
@@ -159,6 +206,22 @@ TEST_F(EvaluateOptionsTest, MalformedListsAreUsageErrors) {
                  CLI::ValidationError)
         << bad;
   }
+}
+
+TEST_F(EvaluateOptionsTest, StreamRateAndDwellAreZeroOrMoreAndFinite) {
+  for (const char* bad : {"--stream-rate -1", "--stream-rate nan", "--stream-rate inf",
+                          "--stream-rate 30hz", "--dwell -0.5", "--dwell nan",
+                          "--min-view-separation nan", "--independent-view-separation inf"}) {
+    CLI::App command{"evaluate"};
+    EvaluateOptions options;
+    addEvaluateOptions(command, options);
+    EXPECT_THROW(command.parse(std::string("--model m --mesh m --out o ") + bad, false),
+                 CLI::ValidationError)
+        << bad;
+  }
+  parse("--stream-rate 0 --dwell 0");
+  EXPECT_EQ(options_.settings.stream_rate_hz, 0.0);
+  EXPECT_EQ(options_.settings.stream_dwell_s, 0.0);
 }
 
 TEST_F(EvaluateOptionsTest, MalformedAnchorsAreRefusedNamingTheOption) {

@@ -60,6 +60,16 @@ TEST_F(VdcCliTest, UsageErrorsExitTwo) {
   EXPECT_EQ(runVdc("evaluate --model m.h5 --mesh m.ply --out e --sequences 0").exit_code, 2);
 }
 
+TEST_F(VdcCliTest, BadStreamOptionsAreUsageErrorsNamingTheOption) {
+  for (const char* bad : {"--stream-rate -5", "--stream-rate nan", "--dwell inf"}) {
+    const ToolRun run =
+        runVdc(std::string("evaluate --model m.h5 --mesh m.ply --out e --no-figure ") + bad);
+    EXPECT_EQ(run.exit_code, 2) << bad << ": " << run.output;
+    const std::string option = std::string(bad).substr(0, std::string(bad).find(' '));
+    EXPECT_EQ(run.output.rfind(option + ": ", 0), 0u) << run.output;
+  }
+}
+
 TEST_F(VdcCliTest, MissingCorruptAndForeignModelFilesFailWithOneLine) {
   const ToolRun missing = runVdc("inspect " + path("absent.h5"));
   expectOneFailureLine(missing);

@@ -43,10 +43,20 @@ struct EvaluationSettings {
   int samples_per_component = 4;
   int threads = 0;  // OpenMP threads; <= 0: all cores
   EstimatorParameters estimator;
+  // Camera streams (evaluation/stream_evaluation.h): frames per second of each sequence's
+  // stream; 0: no stream, one cloud per view only.
+  double stream_rate_hz = 0.0;
+  double stream_dwell_s = 2.0;  // [s] the stream's camera stays this long at each view
 };
 
 // Throws vdc::Error naming the first bad setting.
 void checkEvaluationSettings(const EvaluationSettings& settings);
+
+// The radii of the visibility settings: settings.visibility_radii, {kAllVisible} when empty.
+std::vector<double> visibilityRadii(const EvaluationSettings& settings);
+// Throws vdc::Error when a cropped setting has no anchors or an anchor is not finite.
+void checkVisibilityAnchors(const std::vector<Eigen::Vector3d>& anchors,
+                            const EvaluationSettings& settings);
 
 // How the views after the first are chosen.
 enum class EvaluationPlanner {
@@ -85,8 +95,16 @@ struct SettingErrors {
   double visible_fraction = 1.0;  // of the surface within radius of the anchors
   Eigen::MatrixXd errors_deg;     // sequences x views: error after each view [deg], in [0, 180]
   int skipped_views = 0;  // views without a result (estimator: no update; baseline: no pose)
+  // The estimator's trust signals after each view (sequences x views; empty for a single-view
+  // method): distinct views in the belief, and the radius [deg] around the MAP that holds 90 %
+  // of its mass (BeliefSpread::cone90).
+  Eigen::MatrixXi views_fused;
+  Eigen::MatrixXd cone90_deg;
   // Median over sequences after each view (views entries).
   Eigen::VectorXd medianPerView() const;
+  // The calibration figure: the fraction of sequences whose MAP error after each view is at most
+  // its cone90_deg (views entries; empty without trust signals). An honest belief gives ~0.9.
+  Eigen::VectorXd insideCone90PerView() const;
 };
 
 // The number of views after which the median error (medianPerView) falls under `threshold_deg`
