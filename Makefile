@@ -2,13 +2,17 @@
 #   make demo   install what is missing, build, run the demo on the built-in mug
 #   make test   install what is missing (with rviz and Xvfb for the rviz screenshot test), build,
 #               run every test; ends with "N passed, N failed"
+#   make fuzz           run each libFuzzer target of fuzz/ for FUZZ_SECONDS (default 60) under
+#                       ASan + UBSan (clang 14, build-asan/; doc/hardening.md)
+#   make test-sanitize  the gtest suite under ASan + UBSan (clang 14, build-asan/)
 BUILD_DIR ?= build
 JOBS ?= 2
-export BUILD_DIR JOBS
+FUZZ_SECONDS ?= 60
+export BUILD_DIR JOBS FUZZ_SECONDS
 # Debian's catkin needs Debian's python3 (a pyenv python3 lacks catkin_pkg).
 export PATH := /usr/bin:/bin:$(PATH)
 
-.PHONY: all deps deps-gui build test demo bench format clean
+.PHONY: all deps deps-gui deps-sanitize build test fuzz test-sanitize demo bench format clean
 
 all: build
 
@@ -18,11 +22,20 @@ deps:
 deps-gui:
 	@scripts/install_deps.sh --gui
 
+deps-sanitize:
+	@scripts/install_deps.sh --sanitize
+
 build: deps
 	@scripts/build.sh
 
 test: deps-gui build
 	@scripts/run_tests.sh
+
+fuzz: deps-sanitize
+	@scripts/fuzz.sh
+
+test-sanitize: deps-sanitize
+	@scripts/test_sanitize.sh
 
 demo: build
 	@scripts/demo.sh

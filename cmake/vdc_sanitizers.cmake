@@ -1,9 +1,9 @@
-# Sanitizer and fuzzer builds, each in its own build directory so the ordinary build is untouched
-# (doc/testing.md):
+# Sanitizer and fuzzer builds, in a build directory of their own so the ordinary build is
+# untouched (doc/hardening.md). scripts/sanitized_build.sh sets both in build-asan/, which
+# `make fuzz` and `make test-sanitize` share:
 #   VDC_SANITIZE=address,undefined   every target built and linked with these sanitizers
-#                                    (make test-sanitize, build-asan/)
 #   VDC_BUILD_FUZZERS=ON             the libFuzzer targets of fuzz/ (clang only), every target
-#                                    instrumented for coverage (make fuzz, build-fuzz/)
+#                                    instrumented for coverage (harmless for the gtests)
 set(VDC_SANITIZE "" CACHE STRING
   "Sanitizers for every target, e.g. address,undefined (empty: none)")
 option(VDC_BUILD_FUZZERS "Build the libFuzzer targets of fuzz/ (needs clang)" OFF)

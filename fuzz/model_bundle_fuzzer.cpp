@@ -1,6 +1,6 @@
 // libFuzzer target: the model bundle loader (vdc::loadModelBundle, an HDF5 file), as the server
 // and the estimator load ~model and `vdc inspect` a user's file, followed by what the server does
-// first with a loaded bundle (the next-best-view planner checks its parts agree). The bytes are
+// first with a loaded bundle (its view utility scorer checks the parts agree). The bytes are
 // written to a temporary file because HDF5 reads from one. A damaged bundle must throw
 // vdc::Error.
 
@@ -13,7 +13,7 @@
 #include <string>
 
 #include "view_direction_classification/common/error.h"
-#include "view_direction_classification/planning/next_best_view.h"
+#include "view_direction_classification/planning/view_utility_scorer.h"
 #include "view_direction_classification/training/model_bundle.h"
 
 namespace {
@@ -40,7 +40,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* bytes, std::size_t siz
   std::fclose(file);
   try {
     auto bundle = std::make_shared<const vdc::ModelBundle>(vdc::loadModelBundle(bundlePath()));
-    const vdc::NextBestViewPlanner planner(bundle);
+    const vdc::ViewUtilityScorer scorer(bundle);
   } catch (const vdc::Error&) {
     // refused with one line naming the file and the problem
   }

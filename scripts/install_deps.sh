@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Installs the Debian packages this package builds, tests and runs with.
 # Idempotent: does nothing (and needs no network) when everything is already installed.
-# Usage: scripts/install_deps.sh [--gui]   (--gui adds rviz, Xvfb, ImageMagick and PIL: the rviz
-# screenshot test, which `make test` runs)
+# Usage: scripts/install_deps.sh [--gui] [--sanitize]
+#   --gui       rviz, Xvfb, ImageMagick and PIL: the rviz screenshot test, which `make test` runs
+#   --sanitize  clang 14 with its sanitizer and libFuzzer runtimes and LLVM's OpenMP: `make fuzz`
+#               and `make test-sanitize`
 set -euo pipefail
 
 packages=(
@@ -29,9 +31,13 @@ packages=(
   # the single-view baseline of `vdc evaluate` (OpenCV surface_matching PPF detector)
   libopencv-contrib-dev libopencv-dev
 )
-if [[ "${1:-}" == "--gui" ]]; then
-  packages+=(rviz xvfb xauth imagemagick python3-pil)
-fi
+for option in "$@"; do
+  case "$option" in
+    --gui) packages+=(rviz xvfb xauth imagemagick python3-pil) ;;
+    --sanitize) packages+=(clang-14 libclang-rt-14-dev libomp-14-dev) ;;
+    *) echo "install_deps: unknown option $option" >&2; exit 2 ;;
+  esac
+done
 
 missing=()
 for p in "${packages[@]}"; do

@@ -154,7 +154,7 @@ Eigen::Vector3d visibleCentroid(const ModelSurface& surface, const Eigen::Vector
   const Eigen::Vector3d side = forward.unitOrthogonal();
   const Eigen::Vector3d up = forward.cross(side);
   const double cell = 2.0 * surface.spacing() / camera.norm();
-  std::unordered_map<std::int64_t, std::pair<double, Eigen::Vector3d>> nearest;
+  std::unordered_map<std::uint64_t, std::pair<double, Eigen::Vector3d>> nearest;
   for (const auto& sample : surface.cloud()->points) {
     const Eigen::Vector3d s = sample.getVector3fMap().cast<double>();
     const Eigen::Vector3d ray = s - camera;
@@ -162,7 +162,9 @@ Eigen::Vector3d visibleCentroid(const ModelSurface& surface, const Eigen::Vector
     if (depth <= 0.0 || sample.getNormalVector3fMap().cast<double>().dot(ray) >= 0.0) continue;
     const auto u = static_cast<std::int64_t>(std::floor(ray.dot(side) / depth / cell));
     const auto v = static_cast<std::int64_t>(std::floor(ray.dot(up) / depth / cell));
-    const std::int64_t key = (u << 32) ^ (v & 0xffffffff);
+    // Unsigned: shifting a negative cell index left is undefined behaviour before C++20.
+    const std::uint64_t key =
+        (static_cast<std::uint64_t>(u) << 32) ^ (static_cast<std::uint64_t>(v) & 0xffffffffu);
     auto [it, inserted] = nearest.try_emplace(key, depth, s);
     if (!inserted && depth < it->second.first) it->second = {depth, s};
   }

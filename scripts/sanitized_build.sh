@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Configures (once) and builds targets of the one clang build that both scripts/fuzz.sh and
+# scripts/test_sanitize.sh use, in $SANITIZE_BUILD_DIR (default build-asan): clang-14, ASan +
+# UBSan (VDC_SANITIZE=address,undefined), libFuzzer coverage on every target
+# (VDC_BUILD_FUZZERS=ON, -fsanitize=fuzzer-no-link) and the gtests configured. Sharing it means
+# the fuzz targets and the sanitizer test suite compile the core once, not twice (CI time,
+# doc/hardening.md); the coverage instrumentation does not change what the tests check.
+#   scripts/sanitized_build.sh <target...>
+set -uo pipefail
+cd "$(dirname "$0")/.."
+build_dir=${SANITIZE_BUILD_DIR:-build-asan}
+jobs=${JOBS:-2}
+export PATH=/usr/bin:/bin:$PATH
+
+if [[ ! -f "$build_dir/CMakeCache.txt" ]]; then
+  # -O1: the sanitizers' usual level (fast to build, stacks still readable). A failed configure
+  # caches bad values: start clean.
+  if ! cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      -DCMAKE_C_COMPILER=clang-14 -DCMAKE_CXX_COMPILER=clang++-14 \
+      -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g" -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" \
+      -DVDC_SANITIZE=address,undefined -DVDC_BUILD_FUZZERS=ON -DCATKIN_ENABLE_TESTING=ON \
+      -DPYTHON_EXECUTABLE=/usr/bin/python3 -DPython3_EXECUTABLE=/usr/bin/python3 \
+      > "$build_dir.configure.log" 2>&1; then
+    cat "$build_dir.configure.log" >&2
+    rm -rf "$build_dir"
+    echo "sanitized build: configuring failed (log above)" >&2
+    exit 1
+  fi
+fi
+cmake --build "$build_dir" -- -j"$jobs" "$@"

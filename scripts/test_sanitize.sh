@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# Builds the gtest suite (the core modules', the ROS shell's conversion tests, the vdc CLI tests)
+# with clang under ASan + UBSan in the sanitizer build (scripts/sanitized_build.sh, default
+# build-asan) and runs each binary. The first sanitizer report ends its binary (halt_on_error), so
+# a binary is clean or it fails. Prints the failed cases and "sanitizers: N passed, N failed" as
+# its last line; exit 1 if anything failed.
+#   scripts/test_sanitize.sh [binary...]   (default: every binary of $tests below)
+set -uo pipefail
+cd "$(dirname "$0")/.."
+build_dir=${SANITIZE_BUILD_DIR:-build-asan}
+export PATH=/usr/bin:/bin:$PATH
+
+# Not here (doc/hardening.md): the rostests (most of `make test`'s 13-15 minutes: a second run
+# under ASan does not fit CI's 40; the shell code they run is covered by vdc_ros_tests and the
+# server_requests fuzz target), vdc_findings_tests (trains a 42-direction model, over 3 min even without sanitizers;
+# the training tests run the same code) and vdc_install_tests (installs and builds a dependent
+# package: a check of the install, not of memory).
+tests=(vdc_common_tests vdc_geometry_tests vdc_features_tests vdc_learning_tests
+  vdc_informativeness_tests vdc_training_tests vdc_bingham_tests vdc_refinement_tests
+  vdc_estimation_tests vdc_planning_tests vdc_evaluation_tests vdc_visualisation_tests
+  vdc_ros_tests vdc_cli_tests vdc_evaluation_report_tests)
+[[ $# -gt 0 ]] && tests=("$@")
+
+SANITIZE_BUILD_DIR=$build_dir scripts/sanitized_build.sh "${tests[@]}" || exit 1
+
+# detect_leaks: a leak fails the binary at exit. The suppressions name leaks of the libraries
+# underneath (not this package's code), each with its reason.
+export ASAN_OPTIONS=${ASAN_OPTIONS:-halt_on_error=1:detect_leaks=1}
+export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$PWD/test/sanitizer/lsan.supp:print_suppressions=0}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}
+results="$build_dir/test_results_sanitize"
+# A result file with one failed case, for a binary that wrote none (not built, or stopped by a
+# sanitizer report before gtest wrote its results).
+record_failure() {
+  echo "<testsuites><testsuite><testcase classname=\"$1\" name=\"$2\"><failure/></testcase>" \
+    "</testsuite></testsuites>" > "$results/$1.$2.xml"
+}
+rm -rf "$results"
+mkdir -p "$results"
+for name in "${tests[@]}"; do
+  binary=$(find "$build_dir/devel/lib" "$build_dir" -maxdepth 4 -type f -name "$name" -perm -u+x \
+    | head -1)
+  if [[ -z "$binary" ]]; then
+    echo "sanitizers: $name was not built"
+    record_failure "$name" built
+    continue
+  fi
+  start=$(date +%s)
+  filter=()
+  # PCL 1.13's PPFRegistration::computeTransformation (the PPF baseline of `vdc evaluate`) writes
+  # one past its vote accumulator (ppf_registration.hpp:165: floor(2 pi / step) bins, an angle
+  # near +pi votes into bin floor(2 pi / step)): a heap overflow in PCL, not fixed yet
+  # (doc/hardening.md). Left out until the baseline avoids it, so the rest of the binary runs.
+  [[ $name == vdc_evaluation_tests ]] && filter=(--gtest_filter=-PpfBaselineTest.*)
+  "$binary" "${filter[@]}" --gtest_output="xml:$results/$name.xml" > "$results/$name.log" 2>&1
+  status=$?
+  echo "sanitizers: $name exit $status in $(( $(date +%s) - start )) s"
+  if [[ $status -ne 0 ]]; then
+    grep -E -A40 '^==[0-9]+==ERROR|runtime error|^\[  FAILED' "$results/$name.log" | head -60
+    if ! grep -q '<failure' "$results/$name.xml" 2>/dev/null; then
+      record_failure "$name" sanitizer_report_or_crash
+    fi
+  fi
+done
+summary=$(/usr/bin/python3 scripts/summarize_test_results.py "$results")
+status=$?
+echo "$summary" | sed '$d'
+echo "sanitizers: $(echo "$summary" | tail -1)"
+exit $status
