@@ -1,6 +1,7 @@
 // Per-view latency of the online estimator (issue 5, "Benchmarks"): one cloud in, one fused
-// estimate out, split by stage, for the default mug view and for clouds of ~1k to ~300k object
-// points, plus the process's peak memory.
+// estimate out, split by stage, for the default mug view (without and with refinement) and for
+// clouds of ~1k to ~300k object points, plus the process's peak memory; and the refinement alone
+// (issue 13), by number of hypotheses and by cloud size.
 //
 // Model: the bundle named by the environment variable VDC_BENCH_MODEL, else a quick mug model
 // (quickTrainingParameters(), ~35 s) trained once at start-up; the context block of the output
@@ -18,6 +19,8 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <ctime>
 #include <cstdlib>
 #include <exception>
 #include <fstream>
@@ -27,7 +30,10 @@
 #include <string>
 #include <vector>
 
+#include "view_direction_classification/common/quaternion.h"
+#include "view_direction_classification/common/rotation_error.h"
 #include "view_direction_classification/estimation/orientation_estimator.h"
+#include "view_direction_classification/estimation/view_measurement.h"
 #include "view_direction_classification/features/fpfh_features.h"
 #include "view_direction_classification/geometry/camera.h"
 #include "view_direction_classification/geometry/depth_renderer.h"
@@ -135,6 +141,7 @@ struct StageTotals {
     state.counters["classification_ms"] = sum.classification / n;
     state.counters["measurement_ms"] = sum.measurement / n;
     state.counters["fusion_ms"] = sum.fusion / n;
+    state.counters["refinement_ms"] = sum.refinement / n;
     state.counters["estimate_ms"] = estimate / n;
     state.counters["total_ms"] = (sum.total + estimate) / n;
     state.counters["features"] = features / n;
@@ -143,8 +150,16 @@ struct StageTotals {
   }
 };
 
+// The estimator's settings with the refinement of the benchmark's argument (0: none, 1: icp).
+vdc::EstimatorParameters withRefinement(std::int64_t icp) {
+  vdc::EstimatorParameters parameters;
+  parameters.refinement = icp != 0 ? vdc::RefinementMode::kIcp : vdc::RefinementMode::kNone;
+  return parameters;
+}
+
 // (a) The default mug view: a sequence of updates from the directions above (the filter starts
-// again from the uniform prior after each sequence, outside the timed region).
+// again from the uniform prior after each sequence, outside the timed region); argument:
+// refinement none (0) or icp (1).
 void BM_MugViewSequence(benchmark::State& state) {
   const auto model = benchModel();
   const vdc::DepthRenderer renderer(vdc::makeMug(), vdc::intrinsicsOf(model->parameters));
@@ -154,8 +169,9 @@ void BM_MugViewSequence(benchmark::State& state) {
     views.push_back(renderView(renderer, directions[i], 0.4 * static_cast<double>(i),
                                static_cast<std::uint32_t>(100 + i)));
   }
-  vdc::OrientationEstimator estimator(model, vdc::EstimatorParameters{});
+  vdc::OrientationEstimator estimator(model, withRefinement(state.range(0)));
   StageTotals totals;
+  double refined_poses = 0;
   std::size_t next = 0;
   for (auto _ : state) {
     if (next == views.size()) {
@@ -168,11 +184,16 @@ void BM_MugViewSequence(benchmark::State& state) {
     const vdc::ViewUpdate update = estimator.update(view.cloud, view.world_from_camera);
     if (!update.updated) state.SkipWithError(update.skip_reason.c_str());
     totals.add(update, computeEstimate(estimator));
+    refined_poses += update.refined_poses;
   }
   totals.report(state);
   state.counters["belief_components"] = static_cast<double>(estimator.belief().size());
+  state.counters["refined_poses"] = refined_poses / std::max<double>(1, totals.updates);
 }
 BENCHMARK(BM_MugViewSequence)
+    ->ArgName("icp")
+    ->Arg(0)
+    ->Arg(1)
     ->Unit(benchmark::kMillisecond)
     ->MeasureProcessCPUTime()
     ->UseRealTime()
@@ -258,6 +279,99 @@ void BM_FullUpdateByCloudSize(benchmark::State& state) {
   totals.report(state);
 }
 BENCHMARK(BM_FullUpdateByCloudSize)->Apply(cloudSizeCases);
+
+// The refiner the estimator builds, with `step` degrees between girdle starts and `max_refined`
+// starts aligned.
+vdc::PoseRefiner estimatorRefiner(const vdc::ModelBundle& model, double step, int max_refined) {
+  vdc::RefinementParameters parameters = vdc::EstimatorParameters{}.refinement_parameters;
+  if (step > 0) parameters.hypotheses.girdle_step_deg = step;
+  if (max_refined >= 0) parameters.max_refined = max_refined;
+  return vdc::PoseRefiner(model, parameters);
+}
+
+// What one view's measurement leaves of the roll: the girdle of the true viewing direction (the
+// camera's line of sight through the object origin), in the fixed frame.
+vdc::BinghamMixture trueGirdle(const View& view) {
+  const Eigen::Isometry3d object_from_camera = worldFromObject().inverse() * view.world_from_camera;
+  const Eigen::Vector3d direction = object_from_camera.translation().normalized();
+  const vdc::BinghamMixture camera_frame({1.0}, {vdc::viewGirdle(direction, 18.0)});
+  return vdc::cameraToFixedFrame(
+      camera_frame, vdc::fromEigenQuaternion(Eigen::Quaterniond(view.world_from_camera.linear())));
+}
+
+// CPU time of the calling thread [ms].
+double threadCpuMilliseconds() {
+  timespec now{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return 1e3 * static_cast<double>(now.tv_sec) + 1e-6 * static_cast<double>(now.tv_nsec);
+}
+
+// Times refine() on one view and reports its starts, ICPs and the best kept pose's errors.
+void timeRefinement(benchmark::State& state, const vdc::PoseRefiner& refiner, const View& view) {
+  const vdc::BinghamMixture belief = trueGirdle(view);
+  const Eigen::Vector3d position = worldFromObject().translation();
+  vdc::RefinementView input{pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>(view.cloud),
+                            view.world_from_camera};
+  vdc::RefinementResult result;
+  // refine() runs on this thread alone: its own CPU time is what it costs, whatever else the
+  // machine runs (the wall time on a shared machine is not).
+  double thread_cpu_ms = 0;
+  for (auto _ : state) {
+    const double before = threadCpuMilliseconds();
+    result = refiner.refine(belief, position, {input});
+    thread_cpu_ms += threadCpuMilliseconds() - before;
+  }
+  state.counters["refine_cpu_ms"] = thread_cpu_ms / static_cast<double>(state.iterations());
+  int refined = 0, iterations = 0;
+  for (const vdc::RefinedPose& pose : result.tried) {
+    refined += pose.screened_in ? 1 : 0;
+    iterations += pose.icp_iterations;
+  }
+  state.counters["icp_iterations"] = refined > 0 ? static_cast<double>(iterations) / refined : 0;
+  state.counters["starts"] = static_cast<double>(result.tried.size());
+  state.counters["icps"] = refined;
+  state.counters["kept"] = static_cast<double>(result.kept.size());
+  state.counters["points"] = static_cast<double>(vdc::countValidPoints(view.cloud));
+  if (result.kept.empty()) return;
+  const Eigen::Isometry3d& best = result.kept.front().world_from_object;
+  state.counters["error_deg"] = vdc::rotationErrorDeg(
+      result.kept.front().orientation,
+      vdc::fromEigenQuaternion(Eigen::Quaterniond(worldFromObject().linear())));
+  state.counters["position_error_mm"] =
+      1000.0 * (best.translation() - worldFromObject().translation()).norm();
+}
+
+// (d) The refinement of one view's girdle (the handle seen from the side and above, ~6.8k points)
+// by number of hypotheses: arguments girdle step [deg] (360 / step starts) and starts aligned by
+// ICP (0: all).
+void BM_RefinementByHypotheses(benchmark::State& state) {
+  const auto model = benchModel();
+  const vdc::DepthRenderer renderer(vdc::makeMug(), vdc::intrinsicsOf(model->parameters));
+  const View view = renderView(renderer, Eigen::Vector3d(0.3, 1.0, 0.4).normalized(), 1.3, 11);
+  timeRefinement(state,
+                 estimatorRefiner(*model, static_cast<double>(state.range(0)),
+                                  static_cast<int>(state.range(1))),
+                 view);
+}
+BENCHMARK(BM_RefinementByHypotheses)
+    ->ArgNames({"step_deg", "max_refined"})
+    ->Args({30, 3})
+    ->Args({10, 1})
+    ->Args({10, 3})
+    ->Args({10, 6})
+    ->Args({5, 3})
+    ->Args({30, 0})
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime();
+
+// (d) The same refinement (the estimator's settings) at ~state.range(0) object points.
+void BM_RefinementByCloudSize(benchmark::State& state) {
+  const auto model = benchModel();
+  const View view = viewWithPoints(*model, static_cast<double>(state.range(0)));
+  timeRefinement(state, estimatorRefiner(*model, -1, -1), view);
+}
+BENCHMARK(BM_RefinementByCloudSize)->Apply(cloudSizeCases);
 
 // (c) Peak memory of everything above (runs last: benchmarks run in registration order).
 void BM_PeakMemory(benchmark::State& state) {

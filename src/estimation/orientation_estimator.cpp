@@ -302,6 +302,7 @@ void OrientationEstimator::refineAfterFusion(const pcl::PointCloud<pcl::PointXYZ
   spread_cache_.reset();
   hypotheses_cache_.reset();
   refined_position_ = refinement.kept.front().world_from_object.translation();
+  refined_position_covariance_ = refinement.kept.front().position_covariance;
   result->refined_poses = static_cast<int>(refinement.kept.size());
 }
 
@@ -398,6 +399,7 @@ void OrientationEstimator::reset() {
   last_centroid_world_.reset();
   last_camera_position_world_.reset();
   refined_position_.reset();
+  refined_position_covariance_.reset();
 }
 
 Eigen::Vector4d OrientationEstimator::mapOrientation() const {

@@ -1,10 +1,14 @@
 #include "icp_alignment.h"
 
+#include <pcl/registration/correspondence_estimation.h>
 #include <pcl/registration/icp.h>
 #include <pcl/registration/transformation_estimation_point_to_plane_lls.h>
 #include <pcl/search/kdtree.h>
 
 #include <cmath>
+#include <limits>
+#include <utility>
+#include <vector>
 
 namespace vdc {
 
@@ -36,11 +40,84 @@ class FiniteStepPointToPlane
   mutable bool degenerate = false;
 };
 
+// PCL's correspondence search asks the k-d tree one point at a time, which costs FLANN's per-call
+// set-up each time (nearest_points.h); this one asks the model surface's batched search for all
+// source points at once. The same correspondences: each source point's nearest model sample
+// within the maximum distance, its squared distance as PCL records it.
+class BatchedCorrespondences
+    : public pcl::registration::CorrespondenceEstimation<pcl::PointNormal, pcl::PointNormal> {
+ public:
+  explicit BatchedCorrespondences(std::shared_ptr<const ModelSurface> surface)
+      : surface_(std::move(surface)) {}
+
+  void determineCorrespondences(pcl::Correspondences& correspondences,
+                                double max_distance) override {
+    correspondences.clear();
+    if (!input_) return;
+    std::vector<Eigen::Vector3f> queries;
+    std::vector<int> sources;
+    const std::size_t count = indices_ ? indices_->size() : input_->size();
+    queries.reserve(count);
+    sources.reserve(count);
+    for (std::size_t i = 0; i < count; ++i) {
+      const int source = indices_ ? (*indices_)[i] : static_cast<int>(i);
+      queries.push_back((*input_)[source].getVector3fMap());
+      sources.push_back(source);
+    }
+    std::vector<int> matches;
+    std::vector<float> squared;
+    surface_->nearest().search(queries, &matches, &squared);
+    const double max_squared = max_distance * max_distance;
+    for (std::size_t i = 0; i < queries.size(); ++i) {
+      if (matches[i] < 0 || squared[i] > max_squared) continue;
+      correspondences.emplace_back(sources[i], matches[i], squared[i]);
+    }
+  }
+
+  pcl::registration::CorrespondenceEstimationBase<pcl::PointNormal, pcl::PointNormal>::Ptr clone()
+      const override {
+    return pcl::make_shared<BatchedCorrespondences>(*this);
+  }
+
+ private:
+  std::shared_ptr<const ModelSurface> surface_;
+};
+
+// PCL's ICP, telling how many iterations its last alignment took.
+class CountingIcp
+    : public pcl::IterativeClosestPointWithNormals<pcl::PointNormal, pcl::PointNormal> {
+ public:
+  int iterations() const { return nr_iterations_; }
+};
+
+// PCL's fitness score (the mean squared distance of the points within max_distance of the model
+// to their nearest sample), from one batched search.
+double meanSquaredDistance(const ModelSurface& surface,
+                           const pcl::PointCloud<pcl::PointNormal>& observed,
+                           const Eigen::Isometry3f& object_from_world, double max_distance) {
+  std::vector<Eigen::Vector3f> queries;
+  queries.reserve(observed.size());
+  for (const auto& p : observed.points) queries.push_back(object_from_world * p.getVector3fMap());
+  std::vector<int> matches;
+  std::vector<float> squared;
+  surface.nearest().search(queries, &matches, &squared);
+  double sum = 0.0;
+  int inside = 0;
+  for (const float d2 : squared) {
+    if (d2 > max_distance * max_distance) continue;
+    sum += d2;
+    ++inside;
+  }
+  return inside > 0 ? sum / inside : std::numeric_limits<double>::max();
+}
+
 }  // namespace
 
 struct IcpAlignment::Registration {
-  pcl::IterativeClosestPointWithNormals<pcl::PointNormal, pcl::PointNormal> icp;
+  CountingIcp icp;
   std::shared_ptr<FiniteStepPointToPlane> step = std::make_shared<FiniteStepPointToPlane>();
+  std::shared_ptr<const ModelSurface> surface;
+  pcl::PointCloud<pcl::PointNormal>::Ptr observed;
 };
 
 IcpAlignment::IcpAlignment(std::shared_ptr<const ModelSurface> surface,
@@ -57,12 +134,16 @@ IcpAlignment::IcpAlignment(std::shared_ptr<const ModelSurface> surface,
   tree->setInputCloud(surface->cloud());
   icp.setSearchMethodTarget(tree, true);
   icp.setTransformationEstimation(registration_->step);
+  icp.setCorrespondenceEstimation(pcl::make_shared<BatchedCorrespondences>(surface));
+  registration_->surface = surface;
+  registration_->observed = observed_world;
   icp.setMaximumIterations(settings.max_iterations);
   icp.setMaxCorrespondenceDistance(settings.max_correspondence_distance);
-  // Converged when a step moves the pose by less than 0.1 mm and 0.05 degrees, or the mean
-  // squared distance changes by less than 0.01 % (PCL's "Euclidean fitness epsilon" is relative).
-  icp.setTransformationEpsilon(1e-8);
-  icp.setTransformationRotationEpsilon(std::cos(0.05 * M_PI / 180.0));
+  // Converged when a step moves the pose by less than the settings' translation and rotation, or
+  // the mean squared distance changes by less than 0.01 % (PCL's "Euclidean fitness epsilon" is
+  // relative; its transformation epsilon is the squared translation).
+  icp.setTransformationEpsilon(settings.convergence_translation * settings.convergence_translation);
+  icp.setTransformationRotationEpsilon(std::cos(settings.convergence_rotation_deg * M_PI / 180.0));
   icp.setEuclideanFitnessEpsilon(1e-4);
   // Running out of iterations is not convergence.
   icp.getConvergeCriteria()->setFailureAfterMaximumIterations(true);
@@ -76,6 +157,7 @@ IcpOutcome IcpAlignment::align(const Eigen::Isometry3d& start_object_from_world)
   registration_->step->degenerate = false;
   icp.align(aligned, start_object_from_world.matrix().cast<float>());
   IcpOutcome outcome;
+  outcome.iterations = icp.iterations();
   const Eigen::Matrix4d transform = icp.getFinalTransformation().cast<double>();
   outcome.degenerate = registration_->step->degenerate;
   outcome.converged = icp.hasConverged() && !outcome.degenerate && transform.allFinite();
@@ -84,8 +166,9 @@ IcpOutcome IcpAlignment::align(const Eigen::Isometry3d& start_object_from_world)
   const Eigen::Quaterniond rotation(Eigen::Matrix3d(transform.topLeftCorner<3, 3>()));
   outcome.object_from_world.linear() = rotation.normalized().toRotationMatrix();
   outcome.object_from_world.translation() = transform.topRightCorner<3, 1>();
-  outcome.fitness =
-      icp.getFitnessScore(icp.getMaxCorrespondenceDistance() * icp.getMaxCorrespondenceDistance());
+  outcome.fitness = meanSquaredDistance(*registration_->surface, *registration_->observed,
+                                        outcome.object_from_world.cast<float>(),
+                                        icp.getMaxCorrespondenceDistance());
   return outcome;
 }
 

@@ -16,6 +16,9 @@ namespace vdc {
 struct IcpSettings {
   int max_iterations = 100;
   double max_correspondence_distance = 0.015;
+  // Converged when a step moves the pose by less than both of these.
+  double convergence_translation = 1e-4;  // [m]
+  double convergence_rotation_deg = 0.05;
 };
 
 struct IcpOutcome {
@@ -23,6 +26,7 @@ struct IcpOutcome {
   bool degenerate = false;  // a step was singular (the surface leaves a motion unconstrained)
   Eigen::Isometry3d object_from_world = Eigen::Isometry3d::Identity();
   double fitness = 0.0;  // [m^2]
+  int iterations = 0;
 };
 
 // Aligns one fixed set of observed points (fixed frame) to the model from many starts, with one

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "view_direction_classification/common/error.h"
 
@@ -43,6 +44,10 @@ ModelSurface::ModelSurface(const std::vector<Eigen::Vector3f>& points,
     cloud_->push_back(point);
   }
   tree_.setInputCloud(cloud_);
+  std::vector<Eigen::Vector3f> samples;
+  samples.reserve(cloud_->size());
+  for (const auto& point : cloud_->points) samples.push_back(point.getVector3fMap());
+  nearest_ = std::make_unique<const NearestPoints>(std::move(samples));
 }
 
 }  // namespace vdc

@@ -12,7 +12,9 @@
 #include <unordered_map>
 #include <utility>
 
+#include "fit_covariance.h"
 #include "icp_alignment.h"
+#include "start_screening.h"
 #include "view_direction_classification/common/error.h"
 #include "view_direction_classification/common/quaternion.h"
 #include "view_direction_classification/common/rotation_error.h"
@@ -38,11 +40,22 @@ void checkParameters(const RefinementParameters& p) {
   checkPositive(p.max_correspondence_distance, "max_correspondence_distance");
   checkPositive(p.max_translation_step, "max_translation_step");
   checkPositive(p.max_rotation_step_deg, "max_rotation_step_deg");
+  checkPositive(p.convergence_translation, "convergence_translation");
+  checkPositive(p.convergence_rotation_deg, "convergence_rotation_deg");
   checkPositive(p.max_log_density_drop, "max_log_density_drop");
   checkPositive(p.duplicate_angle_deg, "duplicate_angle_deg");
   checkPositive(p.duplicate_distance, "duplicate_distance");
+  checkPositive(p.min_position_sigma, "min_position_sigma");
+  checkPositive(p.max_position_sigma, "max_position_sigma");
+  if (p.max_position_sigma < p.min_position_sigma) {
+    throw Error("refinement's max_position_sigma must not be below min_position_sigma");
+  }
   if (p.min_points < 3) {
     throw Error("refinement's min_points must be at least 3, got " + std::to_string(p.min_points));
+  }
+  if (p.screening_points < 1) {
+    throw Error("refinement's screening_points must be at least 1, got " +
+                std::to_string(p.screening_points));
   }
   if (p.max_iterations < 1) {
     throw Error("refinement's max_iterations must be at least 1, got " +
@@ -133,12 +146,9 @@ std::vector<RefinementView> thinnedViews(const std::vector<RefinementView>& view
   return thinned;
 }
 
-pcl::PointCloud<pcl::PointNormal>::Ptr icpSource(const pcl::PointCloud<pcl::PointXYZ>::Ptr& world,
-                                                 double voxel) {
+pcl::PointCloud<pcl::PointNormal>::Ptr icpSource(const pcl::PointCloud<pcl::PointXYZ>& filtered) {
   pcl::PointCloud<pcl::PointNormal>::Ptr source(new pcl::PointCloud<pcl::PointNormal>);
-  // Held by name: a range-for over a temporary's member would read freed memory.
-  const pcl::PointCloud<pcl::PointXYZ>::Ptr filtered = voxelFiltered(world, voxel);
-  for (const auto& p : filtered->points) {
+  for (const auto& p : filtered.points) {
     pcl::PointNormal point;
     point.getVector3fMap() = p.getVector3fMap();
     point.getNormalVector3fMap().setZero();
@@ -173,6 +183,26 @@ Eigen::Vector3d visibleCentroid(const ModelSurface& surface, const Eigen::Vector
   return nearest.empty() ? sum : Eigen::Vector3d(sum / nearest.size());
 }
 
+// visibleCentroid() remembered per camera position: the starts along a girdle differ by a roll
+// about the line of sight, which leaves the camera (nearly) where it was in the object frame, so
+// a girdle's starts share one z-buffer instead of each paying for its own.
+class VisibleCentroids {
+ public:
+  explicit VisibleCentroids(const ModelSurface& surface) : surface_(surface) {}
+  Eigen::Vector3d operator()(const Eigen::Vector3d& camera) {
+    for (const auto& [known, centroid] : known_) {
+      // 1 % of the distance: the visible part shifts by far less than ICP's reach.
+      if ((known - camera).norm() < 0.01 * camera.norm()) return centroid;
+    }
+    known_.emplace_back(camera, visibleCentroid(surface_, camera));
+    return known_.back().second;
+  }
+
+ private:
+  const ModelSurface& surface_;
+  std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> known_;
+};
+
 // The pose of orientation q that puts the centroid of the model's part the first camera sees
 // (from where the position estimate is) onto the observed centroid. The estimator's position
 // comes from the MAP's centroid offset; for another roll the visible part, and so the offset,
@@ -180,12 +210,12 @@ Eigen::Vector3d visibleCentroid(const ModelSurface& surface, const Eigen::Vector
 Eigen::Isometry3d placedHypothesis(const Eigen::Vector4d& q, const Eigen::Vector3d& position,
                                    const Eigen::Vector3d& observed_centroid,
                                    const Eigen::Vector3d& camera_position,
-                                   const ModelSurface& surface) {
+                                   VisibleCentroids* visible) {
   const Eigen::Matrix3d rotation = quaternionToRotationMatrix(q);
   const Eigen::Vector3d camera = rotation.transpose() * (camera_position - position);
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
   pose.linear() = rotation;
-  pose.translation() = observed_centroid - rotation * visibleCentroid(surface, camera);
+  pose.translation() = observed_centroid - rotation * (*visible)(camera);
   return pose;
 }
 
@@ -270,29 +300,57 @@ RefinementResult PoseRefiner::refine(const BinghamMixture& belief, const Eigen::
   pcl::compute3DCentroid(*observation.world, centroid);
   const Eigen::Vector3d observed_centroid = centroid.head<3>().cast<double>();
   const Eigen::Vector3d camera_position = observation.views.front().world_from_camera.translation();
-  const PoseVerifier verifier(surface_, thinnedViews(observation.views, parameters_.scene_voxel),
-                              parameters_.verification);
-  IcpAlignment alignment(surface_, icpSource(observation.world, parameters_.scene_voxel),
-                         {parameters_.max_iterations, parameters_.max_correspondence_distance});
+  const pcl::PointCloud<pcl::PointXYZ>::Ptr thinned =
+      voxelFiltered(observation.world, parameters_.scene_voxel);
+  const pcl::PointCloud<pcl::PointXYZ>::Ptr screening_points =
+      evenSubsample(*thinned, parameters_.screening_points);
 
+  VisibleCentroids visible(*surface_);
+  std::vector<double> distances;
+  std::vector<int> components;
   for (const OrientationStart& start : orientationHypotheses(belief, parameters_.hypotheses)) {
     RefinedPose pose;
     pose.start_orientation =
         start.orientation(0) < 0 ? Eigen::Vector4d(-start.orientation) : start.orientation;
     pose.component = start.component;
     pose.start = placedHypothesis(pose.start_orientation, position, observed_centroid,
-                                  camera_position, *surface_);
+                                  camera_position, &visible);
+    pose.world_from_object = pose.start;
+    pose.orientation = pose.start_orientation;
+    pose.screening_distance = meanTruncatedDistance(*surface_, *screening_points, pose.start,
+                                                    parameters_.max_correspondence_distance);
+    pose.rejection = "screened out: its start fits worse than its component's " +
+                     std::to_string(parameters_.max_refined) + " best";
+    distances.push_back(pose.screening_distance);
+    components.push_back(pose.component);
+    result.tried.push_back(pose);
+  }
+
+  const PoseVerifier verifier(surface_, thinnedViews(observation.views, parameters_.scene_voxel),
+                              parameters_.verification);
+  IcpAlignment alignment(
+      surface_, icpSource(*evenSubsample(*thinned, parameters_.icp_points)),
+      {parameters_.max_iterations, parameters_.max_correspondence_distance,
+       parameters_.convergence_translation, parameters_.convergence_rotation_deg});
+  for (const std::size_t index : bestStarts(distances, components, parameters_.max_refined)) {
+    RefinedPose& pose = result.tried[index];
+    pose.screened_in = true;
     pose.start_score = verifier.score(pose.start);
     const IcpOutcome icp = alignment.align(pose.start.inverse());
     pose.world_from_object = icp.converged ? icp.object_from_world.inverse() : pose.start;
     pose.orientation = orientationOf(pose.world_from_object);
     pose.fitness = icp.fitness;
+    pose.icp_iterations = icp.iterations;
     if (icp.converged) pose.score = verifier.score(pose.world_from_object);
     pose.rejection = rejection(pose, icp, belief, parameters_);
     pose.accepted = pose.rejection.empty();
-    result.tried.push_back(pose);
   }
   result.kept = keptPoses(result.tried, parameters_);
+  for (RefinedPose& pose : result.kept) {
+    pose.position_covariance = translationCovariance(
+        *surface_, *thinned, pose.world_from_object, parameters_.max_correspondence_distance,
+        parameters_.min_position_sigma, parameters_.max_position_sigma);
+  }
   result.milliseconds =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_time)
           .count();

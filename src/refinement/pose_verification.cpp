@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "view_direction_classification/common/error.h"
 
@@ -31,12 +33,10 @@ PoseVerifier::PoseVerifier(std::shared_ptr<const ModelSurface> surface,
     if (!view.points || view.points->empty()) continue;
     auto indexed = std::make_unique<IndexedView>();
     indexed->points = view.points;
-    indexed->rays.reset(new pcl::PointCloud<pcl::PointXYZ>);
-    indexed->rays->reserve(view.points->size());
-    for (const auto& p : view.points->points) {
-      indexed->rays->push_back(pcl::PointXYZ(p.x / p.z, p.y / p.z, 0.0f));
-    }
-    indexed->ray_tree.setInputCloud(indexed->rays);
+    std::vector<Eigen::Vector3f> rays;
+    rays.reserve(view.points->size());
+    for (const auto& p : view.points->points) rays.emplace_back(p.x / p.z, p.y / p.z, 0.0f);
+    indexed->rays = std::make_unique<const NearestPoints>(std::move(rays));
     indexed->camera_from_world = view.world_from_camera.inverse();
     views_.push_back(std::move(indexed));
   }
@@ -57,41 +57,49 @@ void PoseVerifier::addViewScore(const IndexedView& view, const Eigen::Isometry3d
                                 int* inliers, int* violations, VerificationScore* score) const {
   const Eigen::Isometry3d camera_from_object = view.camera_from_world * world_from_object;
   const Eigen::Isometry3f object_from_camera = camera_from_object.inverse().cast<float>();
-  std::vector<int> index(1);
-  std::vector<float> squared(1);
   const float radius_sq = static_cast<float>(neighbour_radius_ * neighbour_radius_);
+  std::vector<int> index;
+  std::vector<float> squared;
 
   // The observed half: is each point on the model's surface?
   const auto& model = *surface_->cloud();
+  std::vector<Eigen::Vector3f> queries;
+  queries.reserve(view.points->size());
   for (const auto& p : view.points->points) {
-    pcl::PointNormal query;
-    query.getVector3fMap() = object_from_camera * p.getVector3fMap();
-    ++score->observed;
-    if (surface_->tree().nearestKSearch(query, 1, index, squared) < 1) continue;
-    if (squared[0] > radius_sq) continue;
-    const auto& sample = model[index[0]];
-    const float offset =
-        sample.getNormalVector3fMap().dot(query.getVector3fMap() - sample.getVector3fMap());
+    queries.push_back(object_from_camera * p.getVector3fMap());
+  }
+  surface_->nearest().search(queries, &index, &squared);
+  score->observed += static_cast<int>(queries.size());
+  for (std::size_t i = 0; i < queries.size(); ++i) {
+    if (index[i] < 0 || squared[i] > radius_sq) continue;
+    const auto& sample = model[index[i]];
+    const float offset = sample.getNormalVector3fMap().dot(queries[i] - sample.getVector3fMap());
     if (std::abs(offset) <= parameters_.inlier_distance) ++*inliers;
   }
 
   // The predicted half: is each camera-facing sample where the camera saw a surface?
   const Eigen::Isometry3f transform = camera_from_object.cast<float>();
   const Eigen::Matrix3f rotation = transform.linear();
+  std::vector<Eigen::Vector3f> predicted, rays;
   for (const auto& sample : model.points) {
     const Eigen::Vector3f m = transform * sample.getVector3fMap();
     if (!(m.z() > 0.0f)) continue;
     const Eigen::Vector3f n = rotation * sample.getNormalVector3fMap();
     if (-n.dot(m) / m.norm() < parameters_.min_facing_cosine) continue;
-    ++score->predicted;
-    const pcl::PointXYZ ray(m.x() / m.z(), m.y() / m.z(), 0.0f);
-    const float ray_radius = static_cast<float>(neighbour_radius_) / m.z();
-    if (view.ray_tree.nearestKSearch(ray, 1, index, squared) < 1 ||
-        squared[0] > ray_radius * ray_radius) {
+    predicted.push_back(m);
+    rays.emplace_back(m.x() / m.z(), m.y() / m.z(), 0.0f);
+  }
+  score->predicted += static_cast<int>(predicted.size());
+  view.rays->search(rays, &index, &squared);
+  for (std::size_t i = 0; i < predicted.size(); ++i) {
+    const float ray_radius = static_cast<float>(neighbour_radius_) / predicted[i].z();
+    if (index[i] < 0 || squared[i] > ray_radius * ray_radius) {
       ++*violations;  // predicted where nothing was seen
       continue;
     }
-    if (m.z() < (*view.points)[index[0]].z - parameters_.free_space_tolerance) ++*violations;
+    if (predicted[i].z() < (*view.points)[index[i]].z - parameters_.free_space_tolerance) {
+      ++*violations;
+    }
   }
 }
 

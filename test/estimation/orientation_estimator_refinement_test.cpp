@@ -83,6 +83,10 @@ TEST_F(EstimatorRefinementTest, OneViewGivesAGraspReadyPose) {
   RecordProperty("position_error_mm",
                  std::to_string(1000.0 * (position - worldFromObject().translation()).norm()));
   EXPECT_LT((position - worldFromObject().translation()).norm(), 0.003);
+  // The refined position carries its fit's covariance; the belief alone has none.
+  ASSERT_TRUE(refined.positionCovariance().has_value());
+  EXPECT_GT(refined.positionCovariance()->trace(), 0.0);
+  EXPECT_FALSE(plain.positionCovariance().has_value());
   // The belief stays a Bingham mixture with the verified pose as its peak.
   EXPECT_GT(refined.belief().density(truth()), plain.belief().density(truth()));
 }
@@ -100,6 +104,7 @@ TEST_F(EstimatorRefinementTest, ASkippedRefinementLeavesTheBeliefAsWithout) {
   EXPECT_EQ(skipped.belief().size(), plain.belief().size());
   EXPECT_LT(rotationErrorDeg(skipped.mapOrientation(), plain.mapOrientation()), 1e-9);
   EXPECT_LT((*skipped.positionEstimate() - *plain.positionEstimate()).norm(), 1e-12);
+  EXPECT_FALSE(skipped.positionCovariance().has_value());
 }
 
 }  // namespace

@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -108,6 +111,15 @@ TEST_F(PoseRefinerTest, RecoversTheRollAlongAGirdle) {
   const RefinementResult result = refiner.refine(girdleBelief(kHandleSideOn, v), position(), {v});
   ASSERT_FALSE(result.skipped()) << result.skip_reason;
   EXPECT_EQ(result.tried.size(), 24u);
+  // Only the best-screened starts were aligned; the rest say why not.
+  int aligned = 0;
+  for (const RefinedPose& pose : result.tried) {
+    aligned += pose.screened_in ? 1 : 0;
+    if (!pose.screened_in) {
+      EXPECT_NE(pose.rejection.find("screened out"), std::string::npos);
+    }
+  }
+  EXPECT_EQ(aligned, RefinementParameters{}.max_refined);
   ASSERT_FALSE(result.kept.empty()) << describe(result, truth());
   const RefinedPose& best = result.kept.front();
   EXPECT_LT(rotationErrorDeg(best.orientation, truth()), 2.0) << describe(result, truth());
@@ -115,6 +127,45 @@ TEST_F(PoseRefinerTest, RecoversTheRollAlongAGirdle) {
   EXPECT_GT(best.score.score(), 0.8);
   // Nothing else explains the view as well: one pose kept.
   EXPECT_EQ(result.kept.size(), 1u) << describe(result, truth());
+}
+
+TEST_F(PoseRefinerTest, ScreeningRanksTheStartNearestTheTrueRollFirst) {
+  // 36 starts 10 degrees apart along the girdle; only the best-screened one is aligned, and it
+  // must be the one next to the truth for the roll to come out right.
+  const RefinementView v = view(kHandleSideOn, 2.1);
+  RefinementParameters parameters;
+  parameters.hypotheses.girdle_step_deg = 10.0;
+  parameters.max_refined = 1;
+  const RefinementResult result =
+      PoseRefiner(*surface_, parameters).refine(girdleBelief(kHandleSideOn, v), position(), {v});
+  ASSERT_EQ(result.tried.size(), 36u);
+  const auto best = std::min_element(result.tried.begin(), result.tried.end(),
+                                     [](const RefinedPose& a, const RefinedPose& b) {
+                                       return a.screening_distance < b.screening_distance;
+                                     });
+  EXPECT_TRUE(best->screened_in);
+  EXPECT_LT(rotationErrorDeg(best->start_orientation, truth()), 10.0) << describe(result, truth());
+  ASSERT_EQ(result.kept.size(), 1u) << describe(result, truth());
+  EXPECT_LT(rotationErrorDeg(result.kept[0].orientation, truth()), 2.0);
+}
+
+TEST_F(PoseRefinerTest, AKeptPoseCarriesItsFitsPositionCovariance) {
+  const RefinementView v = view(kHandleSideOn, 2.1);
+  const RefinementResult result =
+      PoseRefiner(*surface_).refine(girdleBelief(kHandleSideOn, v), position(), {v});
+  ASSERT_FALSE(result.kept.empty()) << describe(result, truth());
+  const Eigen::Matrix3d& covariance = result.kept[0].position_covariance;
+  EXPECT_TRUE(covariance.isApprox(covariance.transpose(), 1e-12));
+  const Eigen::Vector3d variances =
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance).eigenvalues();
+  const RefinementParameters defaults;
+  EXPECT_GE(variances.minCoeff(), 0.999 * std::pow(defaults.min_position_sigma, 2));
+  EXPECT_LE(variances.maxCoeff(), 1.001 * std::pow(defaults.max_position_sigma, 2));
+  // The true position lies within the covariance's 3-sigma ellipsoid.
+  const Eigen::Vector3d error = result.kept[0].world_from_object.translation() - position();
+  EXPECT_LT(error.dot(covariance.inverse() * error), 9.0)
+      << "error " << 1000 * error.transpose() << " mm, sigmas "
+      << 1000 * variances.cwiseSqrt().transpose() << " mm";
 }
 
 TEST_F(PoseRefinerTest, VerificationRejectsTheMirroredHandle) {
@@ -223,6 +274,12 @@ TEST_F(PoseRefinerTest, RefusesInvalidParameters) {
   EXPECT_THROW(PoseRefiner(*surface_, parameters), Error);
   parameters = {};
   parameters.hypotheses.girdle_step_deg = -1.0;
+  EXPECT_THROW(PoseRefiner(*surface_, parameters), Error);
+  parameters = {};
+  parameters.screening_points = 0;
+  EXPECT_THROW(PoseRefiner(*surface_, parameters), Error);
+  parameters = {};
+  parameters.min_position_sigma = 0.1;  // above max_position_sigma
   EXPECT_THROW(PoseRefiner(*surface_, parameters), Error);
 }
 

@@ -17,17 +17,12 @@
 #include "view_direction_classification/estimation/object_tracking.h"
 #include "view_direction_classification/estimation/orientation_filter.h"
 #include "view_direction_classification/estimation/refined_measurement.h"
+#include "view_direction_classification/estimation/refinement_mode.h"
 #include "view_direction_classification/planning/view_utility_scorer.h"
 #include "view_direction_classification/refinement/pose_refiner.h"
 #include "view_direction_classification/training/model_bundle.h"
 
 namespace vdc {
-
-// What follows the fusion of each view (doc/method.md, "Refinement").
-enum class RefinementMode {
-  kNone,  // the belief alone
-  kIcp,   // its leading hypotheses refined by ICP, verified, and the verified poses fused
-};
 
 // Online settings of the estimator (config/estimator.yaml). Feature settings are not here: they
 // come from the model bundle, so online features match the training ones.
@@ -54,13 +49,16 @@ struct EstimatorParameters {
   // centroid offset of the model's views plus 2 cm (their centroids differ by up to that much).
   double max_object_shift = 0.0;
   // Geometric refinement after each fused view. The estimator's hypotheses: the 2 heaviest
-  // components, girdles every 30 degrees (ICP's basin of the roll is about +-45 degrees), so a
-  // view costs 24 ICPs at most.
+  // components, girdles every 30 degrees (ICP's basin of the roll is about +-45 degrees), every
+  // start aligned (max_refined 0): screening to the 3 best of a 10-degree girdle lost the roll on
+  // the estimator test's quick-model view (113 degrees off; 8 best: 6.5), whose girdles lie up to
+  // a grid spacing off the true direction.
   RefinementMode refinement = RefinementMode::kNone;
   RefinementParameters refinement_parameters = [] {
     RefinementParameters p;
     p.hypotheses.max_components = 2;
     p.hypotheses.girdle_step_deg = 30.0;
+    p.max_refined = 0;
     return p;
   }();
   RefinedFusionParameters refined_fusion;
@@ -170,6 +168,9 @@ class OrientationEstimator {
   // centroid offset of the training direction the camera sees it from under the MAP
   // orientation. Empty before the first update.
   std::optional<Eigen::Vector3d> positionEstimate() const;
+  // [m^2, fixed frame] The position estimate's covariance from the refinement's fit (the best
+  // verified pose's, PoseRefiner); empty when the position is not a refined one.
+  std::optional<Eigen::Matrix3d> positionCovariance() const { return refined_position_covariance_; }
   // How far the belief spreads around its MAP (the 90 % cone and the covariance of the ROS
   // pose, from the same 1000 fixed-seed samples); computed once per belief.
   const BeliefSpread& spread() const;
@@ -210,6 +211,7 @@ class OrientationEstimator {
   std::optional<Eigen::Vector3d> last_centroid_world_, last_camera_position_world_;
   std::shared_ptr<const PoseRefiner> refiner_;  // only with RefinementMode::kIcp
   std::optional<Eigen::Vector3d> refined_position_;
+  std::optional<Eigen::Matrix3d> refined_position_covariance_;
   // Only when selection.min_information_gain > 0.
   std::shared_ptr<const ViewUtilityScorer> gain_scorer_;
   // The MAP costs a search over every component: computed once per belief, on first request;

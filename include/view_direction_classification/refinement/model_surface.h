@@ -6,7 +6,10 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <memory>
 #include <vector>
+
+#include "view_direction_classification/refinement/nearest_points.h"
 
 namespace vdc {
 
@@ -27,6 +30,8 @@ class ModelSurface {
 
   const pcl::PointCloud<pcl::PointNormal>::Ptr& cloud() const { return cloud_; }
   const pcl::KdTreeFLANN<pcl::PointNormal>& tree() const { return tree_; }
+  // The same samples for batched searches (nearest_points.h: what refinement uses).
+  const NearestPoints& nearest() const { return *nearest_; }
   std::size_t size() const { return cloud_->size(); }
   // [m] The thinned samples' spacing (never below the source's).
   double spacing() const { return spacing_; }
@@ -36,6 +41,7 @@ class ModelSurface {
  private:
   pcl::PointCloud<pcl::PointNormal>::Ptr cloud_;
   pcl::KdTreeFLANN<pcl::PointNormal> tree_;
+  std::unique_ptr<const NearestPoints> nearest_;
   double spacing_;
   Eigen::AlignedBox3d bounds_;
 };

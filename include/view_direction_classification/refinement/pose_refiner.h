@@ -22,12 +22,25 @@ struct RefinementParameters {
   double model_spacing = 0.004;  // [m] the bundle's surface set thinned to this for ICP and scores
   double scene_voxel = 0.004;    // [m] the observed points are voxel-filtered to this for ICP
   int min_points = 50;           // fewer finite observed points: refinement is skipped
+  // Screening: every start is first scored by the mean distance of about screening_points of the
+  // observed points to the model's surface (truncated at max_correspondence_distance), and only
+  // the max_refined best of each belief component are aligned by ICP and verified (<= 0: every
+  // start). ICP is the cost
+  // (milliseconds per start), screening a fraction of a millisecond per start.
+  int max_refined = 3;
+  int screening_points = 200;
   // An observation whose bounding box diagonal exceeds this many model diagonals is not (only)
   // the object: skipped.
   double max_extent_ratio = 2.0;
-  // Point-to-plane ICP (PCL), the observed points against the model's surface.
+  // Point-to-plane ICP (PCL), about icp_points of the observed points (voxel-filtered, then every
+  // k-th; <= 0: all of them) against the model's surface. Its cost grows with them; a few hundred
+  // well-spread points pin down six degrees of freedom as well as thousands.
+  int icp_points = 400;
   int max_iterations = 100;                    // not converged within these: refused
   double max_correspondence_distance = 0.015;  // [m]
+  // Converged when a step moves the pose by less than both of these.
+  double convergence_translation = 1e-4;  // [m]
+  double convergence_rotation_deg = 0.05;
   // ICP moving the pose further than this from its start has left the hypothesis: refused.
   double max_translation_step = 0.03;   // [m]
   double max_rotation_step_deg = 45.0;  // [deg]
@@ -42,6 +55,11 @@ struct RefinementParameters {
   double keep_score_margin = 0.03;
   double duplicate_angle_deg = 5.0;
   double duplicate_distance = 0.005;  // [m]
+  // A kept pose's translation covariance (fit_covariance.h) has principal standard deviations in
+  // [min_position_sigma, max_position_sigma]: the fit's matches are not independent, so below
+  // about a quarter of the model's 4 mm sample spacing its own figure would be over-confident.
+  double min_position_sigma = 0.001;  // [m]
+  double max_position_sigma = 0.05;   // [m]
 };
 
 // One hypothesis and what refinement made of it.
@@ -51,15 +69,23 @@ struct RefinedPose {
   Eigen::Isometry3d start = Eigen::Isometry3d::Identity();          // world_from_object before ICP
   Eigen::Isometry3d world_from_object = Eigen::Isometry3d::Identity();  // after ICP
   Eigen::Vector4d orientation = Eigen::Vector4d(1, 0, 0, 0);  // q_WO of world_from_object, w >= 0
-  VerificationScore start_score, score;
-  double fitness = 0.0;  // [m^2] ICP's mean squared correspondence distance
+  VerificationScore start_score, score;                       // (only for screened-in starts)
+  // [m] The start's screening distance: the observed points' mean truncated distance to the model.
+  double screening_distance = 0.0;
+  bool screened_in = false;  // among its component's max_refined best: aligned and verified
+  double fitness = 0.0;      // [m^2] ICP's mean squared correspondence distance
+  int icp_iterations = 0;
+  // [m^2, fixed frame] Covariance of world_from_object's translation from the fit (kept poses
+  // only; zero otherwise).
+  Eigen::Matrix3d position_covariance = Eigen::Matrix3d::Zero();
   bool accepted = false;
   std::string rejection;  // why it was refused (one sentence), empty when accepted
 };
 
 struct RefinementResult {
-  std::string skip_reason;         // non-empty: bad input, nothing was tried
-  std::vector<RefinedPose> tried;  // every hypothesis, in the order they were made
+  std::string skip_reason;  // non-empty: bad input, nothing was tried
+  // Every hypothesis, in the order they were made; those screened out have a rejection saying so.
+  std::vector<RefinedPose> tried;
   // The distinct accepted poses within keep_score_margin of the best, best first. Empty when
   // skipped or nothing was accepted; several where geometry cannot tell them apart.
   std::vector<RefinedPose> kept;
@@ -69,8 +95,9 @@ struct RefinementResult {
 
 // Hypothesis refinement after fusion (doc/method.md, "Refinement"): the belief's leading
 // orientations (pose_hypotheses.h) are each placed so that the model's camera-facing centroid
-// meets the observed centroid, aligned to the observed points by point-to-plane ICP against the
-// model's surface samples, and verified (pose_verification.h). No ROS; refine() is const.
+// meets the observed centroid and screened; the best are aligned to the observed points by
+// point-to-plane ICP against the model's surface samples, and verified (pose_verification.h).
+// No ROS; refine() is const.
 class PoseRefiner {
  public:
   // Throws vdc::Error for invalid parameters.

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "view_direction_classification/refinement/model_surface.h"
+#include "view_direction_classification/refinement/nearest_points.h"
 
 namespace vdc {
 
@@ -62,8 +63,7 @@ class PoseVerifier {
  private:
   struct IndexedView {
     pcl::PointCloud<pcl::PointXYZ>::ConstPtr points;
-    pcl::PointCloud<pcl::PointXYZ>::Ptr rays;  // (x/z, y/z, 0) of each point
-    pcl::KdTreeFLANN<pcl::PointXYZ> ray_tree;
+    std::unique_ptr<const NearestPoints> rays;  // (x/z, y/z, 0) of each point
     Eigen::Isometry3d camera_from_world;
   };
   void addViewScore(const IndexedView& view, const Eigen::Isometry3d& world_from_object,
