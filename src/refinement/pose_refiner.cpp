@@ -23,8 +23,6 @@ namespace vdc {
 
 namespace {
 
-constexpr double kDegrees = M_PI / 180.0;
-
 void checkPositive(double value, const char* name) {
   if (!(value > 0.0) || !std::isfinite(value)) {
     throw Error(std::string("refinement's ") + name + " must be positive and finite, got " +
