@@ -97,6 +97,10 @@ void checkParameters(const EstimatorParameters& p) {
                 std::to_string(p.belief_weight_floor));
   }
   if (!std::isfinite(p.kappa)) throw Error("kappa must be finite");
+  if (!(p.psum_exponent > 0.0) || !std::isfinite(p.psum_exponent)) {
+    throw Error("psum_exponent must be finite and positive, got " +
+                std::to_string(p.psum_exponent));
+  }
   if (!(p.max_object_shift >= 0.0) || !std::isfinite(p.max_object_shift)) {
     throw Error("max_object_shift must be a finite length >= 0, got " +
                 std::to_string(p.max_object_shift));
@@ -249,13 +253,11 @@ ViewUpdate OrientationEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cl
 
   // Tempered likelihood (doc/method.md section 12): (sum_m p_m B_m)^a ~ sum_m p_m^a B_m^a when
   // the girdles hardly overlap, and B^a is the girdle of concentration a kappa (the normaliser
-  // ratio is the same for every m and cancels).
+  // ratio is the same for every m and cancels). The p_sum exponent gamma sharpens the weights
+  // alone: (p^gamma)^a = p^(gamma a).
   const double exponent = result.likelihood_exponent;
-  Eigen::VectorXd weights = result.p_sum;
-  if (exponent < 1.0) {
-    weights = result.p_sum.array().pow(exponent).matrix();
-    weights /= weights.sum();
-  }
+  const Eigen::VectorXd weights =
+      sharpenedDistribution(result.p_sum, parameters_.psum_exponent * exponent);
   const BinghamMixture camera_frame = viewMeasurement(
       weights, model_->view_directions, exponent * kappa_, 0.0, parameters_.min_weight);
   const Eigen::Vector4d line_of_sight =

@@ -60,6 +60,23 @@ double defaultViewConcentration(double neighbour_spacing) {
   return std::log(2.0) / (2.0 * std::pow(std::sin(neighbour_spacing / 4.0), 2));
 }
 
+Eigen::VectorXd sharpenedDistribution(const Eigen::VectorXd& p_sum, double exponent) {
+  if (!(exponent > 0.0) || !std::isfinite(exponent)) {
+    std::ostringstream message;
+    message << "The exponent on the view distribution must be finite and positive, but is "
+            << exponent << ".";
+    throw Error(message.str());
+  }
+  if (p_sum.size() == 0 || !p_sum.allFinite() || (p_sum.array() < 0.0).any() ||
+      !(p_sum.maxCoeff() > 0.0)) {
+    throw Error("The view distribution to sharpen must be non-empty, finite and non-negative.");
+  }
+  if (exponent == 1.0) return p_sum;
+  // Relative to the largest entry, so that a large exponent cannot underflow every weight.
+  Eigen::VectorXd sharpened = (p_sum / p_sum.maxCoeff()).array().pow(exponent).matrix();
+  return sharpened / sharpened.sum();
+}
+
 BinghamMixture viewMeasurement(const Eigen::VectorXd& p_sum,
                                const std::vector<Eigen::Vector3d>& directions, double kappa,
                                double roll_concentration, double min_weight) {

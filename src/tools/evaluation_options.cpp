@@ -179,6 +179,12 @@ void addEvaluateOptions(CLI::App& command, EvaluateOptions& options) {
       ->capture_default_str()
       ->check(CLI::Range(0.0, 0.5));
   addSetting(
+      command, options, "--psum-exponent",
+      [](auto& s) -> auto& { return s.estimator.psum_exponent; }, "/estimator/psum_exponent",
+      "exponent on the summed view distribution before it weights the girdles (1: unchanged)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.01, 100.0));
+  addSetting(
       command, options, "--belief-weight-floor",
       [](auto& s) -> auto& { return s.estimator.belief_weight_floor; },
       "/estimator/belief_weight_floor",

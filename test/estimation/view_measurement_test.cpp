@@ -55,6 +55,30 @@ TEST(ViewMeasurement, MixtureDropsDirectionsBelowTheThresholdAndRenormalises) {
   EXPECT_NEAR(mixture.weight(0), 0.7 / 0.9995, 1e-12);
 }
 
+TEST(ViewMeasurement, SharpenedDistributionRaisesEachProbabilityToTheExponentAndRenormalises) {
+  Eigen::VectorXd p(3);
+  p << 0.6, 0.3, 0.1;
+  const Eigen::VectorXd unchanged = sharpenedDistribution(p, 1.0);
+  EXPECT_TRUE(unchanged.isApprox(p, 1e-15));
+  // Squared: 0.36, 0.09, 0.01 over 0.46.
+  const Eigen::VectorXd squared = sharpenedDistribution(p, 2.0);
+  EXPECT_NEAR(squared(0), 0.36 / 0.46, 1e-12);
+  EXPECT_NEAR(squared(1), 0.09 / 0.46, 1e-12);
+  EXPECT_NEAR(squared(2), 0.01 / 0.46, 1e-12);
+  // A large exponent keeps the most probable direction instead of underflowing to 0/0.
+  const Eigen::VectorXd steep = sharpenedDistribution(p, 2000.0);
+  ASSERT_TRUE(steep.allFinite());
+  EXPECT_NEAR(steep(0), 1.0, 1e-12);
+  // Below 1 it flattens: the ratio of the first two falls from 2 to sqrt(2).
+  const Eigen::VectorXd flat = sharpenedDistribution(p, 0.5);
+  EXPECT_NEAR(flat(0) / flat(1), std::sqrt(2.0), 1e-12);
+  EXPECT_NEAR(flat.sum(), 1.0, 1e-12);
+  EXPECT_THROW(sharpenedDistribution(p, 0.0), Error);
+  EXPECT_THROW(sharpenedDistribution(p, NAN), Error);
+  EXPECT_THROW(sharpenedDistribution(Eigen::VectorXd(0), 2.0), Error);
+  EXPECT_THROW(sharpenedDistribution(Eigen::Vector2d(0.5, -0.5), 2.0), Error);
+}
+
 TEST(ViewMeasurement, FixedFrameMixtureIsTheCameraOneRotatedByTheCameraPose) {
   const std::vector<Eigen::Vector3d> directions{Eigen::Vector3d(0, 1, 0)};
   const BinghamMixture camera = viewMeasurement(Eigen::VectorXd::Ones(1), directions, 20.0);

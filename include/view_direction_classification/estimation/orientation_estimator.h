@@ -35,6 +35,10 @@ struct EstimatorParameters {
   int max_components = 50;
   int min_features = 10;     // a view with fewer features is skipped (no update)
   double min_weight = 1e-3;  // measurement components below this p_sum are dropped
+  // Exponent on the classifier's summed distribution before it weights the girdles
+  // (sharpenedDistribution: p_sum^gamma renormalised; kappa unchanged). 1 leaves p_sum as it is;
+  // above 1 narrows a belief that the flat p_sum makes too wide (doc/evaluation.md, calibration).
+  double psum_exponent = 1.0;
   // Belief components lighter than this fraction of the heaviest are dropped after each fusion
   // (and their products never computed). 1e-3 gave the same median errors on the evaluation but
   // no faster updates in the estimator benchmark (fewer merges, more refits), so it stays 1e-6.

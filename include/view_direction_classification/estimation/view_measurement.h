@@ -36,6 +36,14 @@ BinghamDistribution viewGirdle(const Eigen::Vector3d& direction, double kappa,
 // unless 0 < spacing <= pi.
 double defaultViewConcentration(double neighbour_spacing);
 
+// The view distribution sharpened (exponent > 1) or flattened (< 1): p_sum(m)^exponent,
+// renormalised; exponent 1 returns p_sum unchanged. The classifier's averaged p_sum spreads over
+// many neighbouring directions, which makes the belief wider than its errors (doc/evaluation.md,
+// "Camera streams and calibration"); an exponent on p_sum alone narrows it without narrowing each
+// girdle. Throws vdc::Error for an empty p_sum, negative or non-finite entries, or an exponent
+// that is not finite and positive.
+Eigen::VectorXd sharpenedDistribution(const Eigen::VectorXd& p_sum, double exponent);
+
 // The view's measurement sum_m p_sum(m) B_m in the camera frame: one girdle per direction whose
 // probability is at least min_weight (1e-3; if none is, the most probable one alone), weights
 // renormalised. Throws vdc::Error if p_sum and directions differ in size or are empty, p_sum has
