@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <limits>
 #include <random>
 #include <string>
 
@@ -82,6 +83,7 @@ struct RunOutput {
   std::vector<double> errors;
   std::vector<int> views_fused;
   std::vector<double> cone90_deg;
+  std::vector<double> position_errors_mm;
   int skipped = 0;
   double planning_ms = 0, map_ms = 0;
   UpdateTiming stage_ms;  // sums
@@ -214,6 +216,25 @@ std::optional<int> viewsUntilMedianStaysBelow(const Eigen::VectorXd& median_per_
   return first;
 }
 
+double medianIgnoringNaN(const double* values, Eigen::Index count) {
+  std::vector<double> finite;
+  for (Eigen::Index i = 0; i < count; ++i) {
+    if (!std::isnan(values[i])) finite.push_back(values[i]);
+  }
+  if (finite.empty()) return std::numeric_limits<double>::quiet_NaN();
+  std::sort(finite.begin(), finite.end());
+  const std::size_t n = finite.size();
+  return n % 2 ? finite[n / 2] : 0.5 * (finite[n / 2 - 1] + finite[n / 2]);
+}
+
+Eigen::VectorXd SettingErrors::medianPositionPerView() const {
+  Eigen::VectorXd medians(position_errors_mm.cols());
+  for (Eigen::Index v = 0; v < position_errors_mm.cols(); ++v) {
+    medians(v) = medianIgnoringNaN(position_errors_mm.col(v).data(), position_errors_mm.rows());
+  }
+  return medians;
+}
+
 Eigen::VectorXd SettingErrors::medianPerView() const {
   Eigen::VectorXd medians(errors_deg.cols());
   for (Eigen::Index v = 0; v < errors_deg.cols(); ++v) {
@@ -293,6 +314,10 @@ EvaluationResult evaluateEstimator(std::shared_ptr<const ModelBundle> model,
         out.errors.push_back(rotationErrorDeg(map, sequence.world_from_object));
         out.views_fused.push_back(estimator.viewsFused());
         out.cone90_deg.push_back(estimator.spread().cone90 * 180.0 / M_PI);
+        // The object sits at the world origin.
+        const std::optional<Eigen::Vector3d> position = estimator.positionEstimate();
+        out.position_errors_mm.push_back(position ? 1000.0 * position->norm()
+                                                  : std::numeric_limits<double>::quiet_NaN());
 #pragma omp critical(vdc_evaluation_progress)
         reportProgress(progress, stage, ++done_views, total_views);
       }
@@ -314,6 +339,7 @@ EvaluationResult evaluateEstimator(std::shared_ptr<const ModelBundle> model,
     setting.errors_deg.resize(settings.sequences, settings.views);
     setting.views_fused.resize(settings.sequences, settings.views);
     setting.cone90_deg.resize(settings.sequences, settings.views);
+    setting.position_errors_mm.resize(settings.sequences, settings.views);
     for (int s = 0; s < settings.sequences; ++s) {
       const RunOutput& out = outputs[static_cast<std::size_t>(s * settings_count + k)];
       for (int v = 0; v < settings.views; ++v) {
@@ -321,6 +347,7 @@ EvaluationResult evaluateEstimator(std::shared_ptr<const ModelBundle> model,
         setting.errors_deg(s, v) = out.errors[view];
         setting.views_fused(s, v) = out.views_fused[view];
         setting.cone90_deg(s, v) = out.cone90_deg[view];
+        setting.position_errors_mm(s, v) = out.position_errors_mm[view];
       }
       setting.skipped_views += out.skipped;
       planning_ms += out.planning_ms;
@@ -360,6 +387,8 @@ EvaluationResult evaluateSingleView(const SingleViewMethod& method, const std::s
     setting.radius = radii[k];
     setting.visible_fraction = fractions[k];
     setting.errors_deg.resize(settings.sequences, settings.views);
+    setting.position_errors_mm.setConstant(settings.sequences, settings.views,
+                                           std::numeric_limits<double>::quiet_NaN());
     result.settings.push_back(std::move(setting));
   }
   double method_ms = 0;
@@ -382,6 +411,8 @@ EvaluationResult evaluateSingleView(const SingleViewMethod& method, const std::s
           // between R_WC R_CO and q_WO, R_WC being known exactly).
           error = rotationErrorDeg(quaternionFromRotationMatrix(estimate->linear()),
                                    quaternionFromRotationMatrix(camera_from_object.linear()));
+          setting.position_errors_mm(s, v) =
+              1000.0 * (estimate->translation() - camera_from_object.translation()).norm();
         } else {
           ++setting.skipped_views;
         }

@@ -48,6 +48,23 @@ ParameterTable<EstimatorRosParameters> makeTable() {
       .add("max_camera_speed", selection(&F::max_camera_speed), numberAtLeast(0.0, "0: no check"))
       .add("max_camera_turn_rate", selection(&F::max_camera_turn_rate),
            numberAtLeast(0.0, "0: no check"));
+  // Geometric refinement after each fused view (doc/method.md, "Refinement").
+  using R = RefinementParameters;
+  using H = HypothesisParameters;
+  const auto refinement = [](auto member) {
+    return fieldPath(&P::core, &E::refinement_parameters, member);
+  };
+  const auto hypotheses = [](auto member) {
+    return fieldPath(&P::core, &E::refinement_parameters, &R::hypotheses, member);
+  };
+  table.addChoice("refinement", core(&E::refinement), refinementModeChoices())
+      .add("refinement_max_components", hypotheses(&H::max_components), integerAtLeast(1))
+      .add("refinement_girdle_step_deg", hypotheses(&H::girdle_step_deg),
+           ParameterRule<double>{"a number in (0, 180]",
+                                 [](double value) { return value > 0.0 && value <= 180.0; }})
+      .add("refinement_max_refined", refinement(&R::max_refined),
+           integerAtLeast(0, "0: every start"))
+      .add("refinement_min_score", refinement(&R::min_score), numberIn(-1.0, 1.0, true));
   // Segmentation (its region of interest is in the fixed frame).
   using S = SegmentationParameters;
   const auto segmentation = [](auto member) {

@@ -20,11 +20,13 @@ struct EstimatorRosParameters {
   // [Hz] re-broadcast of the latest object tf with fresh stamps (/tf is not latched: rviz or a
   // listener started after an estimate would never learn the frame); 0 = only on each estimate.
   double tf_rate = 10.0;
-  double tf_timeout = 0.2;            // [s] wait for the camera pose at the cloud's stamp
-  int max_points = 500000;            // larger clouds are skipped (latency guard)
-  double position_variance = 0.0025;  // [m^2] per axis in ~pose's covariance
-  int marker_samples = 20;            // axes triads sampled from the belief for ~markers
-  double marker_length = 0.1;         // [m] MAP axes arrows; samples are drawn at 0.8 of it
+  double tf_timeout = 0.2;  // [s] wait for the camera pose at the cloud's stamp
+  int max_points = 500000;  // larger clouds are skipped (latency guard)
+  // [m^2] per axis in ~pose's covariance when the position is not a refined one (refinement
+  // none, or nothing verified yet); a refined position carries its fit's covariance.
+  double position_variance = 0.0025;
+  int marker_samples = 20;     // axes triads sampled from the belief for ~markers
+  double marker_length = 0.1;  // [m] MAP axes arrows; samples are drawn at 0.8 of it
   // [deg] ~estimate's `converged` when its cone90_deg is at most this.
   double converged_cone90_deg = 15.0;
   // Core settings; segmentation.roi_centre holds the region of interest in the FIXED frame (the

@@ -42,13 +42,13 @@ Eigen::Isometry3d toIsometry(const geometry_msgs::TransformStamped& transform) {
 
 geometry_msgs::PoseWithCovariance toPoseWithCovarianceMsg(
     const Eigen::Vector3d& position, const Eigen::Vector4d& orientation_wxyz,
-    double position_variance, const Eigen::Matrix3d& orientation_covariance) {
+    const Eigen::Matrix3d& position_covariance, const Eigen::Matrix3d& orientation_covariance) {
   geometry_msgs::PoseWithCovariance msg;
   msg.pose.position = tf2::toMsg(position);
   msg.pose.orientation = toQuaternionMsg(orientation_wxyz);
   for (int i = 0; i < 3; ++i) {
-    msg.covariance[i * 6 + i] = position_variance;
     for (int j = 0; j < 3; ++j) {
+      msg.covariance[i * 6 + j] = position_covariance(i, j);
       msg.covariance[(i + 3) * 6 + (j + 3)] = orientation_covariance(i, j);
     }
   }

@@ -221,7 +221,10 @@ void OrientationEstimatorRos::publishEstimate(const std_msgs::Header& cloud_head
   if (!position) return;  // cannot happen after a fused view; nothing to place the pose at
   const auto pose = boost::make_shared<geometry_msgs::PoseWithCovarianceStamped>();
   pose->header = header;
-  pose->pose = toPoseWithCovarianceMsg(*position, map, parameters_.position_variance,
+  // The refinement's fit gives the position's covariance; without it, the configured variance.
+  const Eigen::Matrix3d position_covariance = estimator_->positionCovariance().value_or(
+      parameters_.position_variance * Eigen::Matrix3d::Identity());
+  pose->pose = toPoseWithCovarianceMsg(*position, map, position_covariance,
                                        estimator_->orientationCovariance());
   pose_publisher_.publish(pose);
 

@@ -1,5 +1,6 @@
 #include "evaluation_csv.h"
 
+#include <cmath>
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -20,6 +21,9 @@ struct ErrorsCsvRow {
   std::optional<double> time_s;    // streams only
   std::optional<int> views_fused;  // the estimator's trust signals
   std::optional<double> cone90_deg;
+  // Distance of the estimated object origin from the true one; none where there is no position
+  // estimate (a baseline's view without a pose, stream rows).
+  std::optional<double> position_error_mm;
 };
 
 struct ErrorsCsvColumn {
@@ -57,6 +61,8 @@ const ErrorsCsvColumn kColumns[] = {
        if (!r.cone90_deg) return std::string();
        return std::string(r.map_error_deg <= *r.cone90_deg ? "1" : "0");
      }},
+    {"position_error_mm",
+     [](const ErrorsCsvRow& r) { return optionalFixed(r.position_error_mm, 4); }},
 };
 
 void writeHeader(std::ostream& out) {
@@ -94,6 +100,10 @@ void writeResultRows(std::ostream& out, const EvaluationResult& result) {
           row.views_fused = setting.views_fused(s, v);
           row.cone90_deg = setting.cone90_deg(s, v);
         }
+        if (s < setting.position_errors_mm.rows() && v < setting.position_errors_mm.cols() &&
+            !std::isnan(setting.position_errors_mm(s, v))) {
+          row.position_error_mm = setting.position_errors_mm(s, v);
+        }
         writeRow(out, row);
       }
     }
@@ -106,7 +116,7 @@ void writeStreamRows(std::ostream& out, const StreamEvaluationResult& stream) {
       auto write = [&](const StreamSample& sample, const char* event) {
         writeRow(out, {stream.name, visibilityLabel(setting.radius), static_cast<Eigen::Index>(s),
                        sample.view, sample.map_error_deg, event, sample.time_s, sample.views_fused,
-                       sample.cone90_deg});
+                       sample.cone90_deg, std::nullopt});  // the stream has no position
       };
       for (const StreamSample& sample : setting.sequences[s].fusions) write(sample, "fused");
       for (const StreamSample& sample : setting.sequences[s].view_ends) write(sample, "dwell_end");

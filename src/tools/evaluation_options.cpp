@@ -2,10 +2,12 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <map>
 #include <sstream>
 
 #include "evaluation_labels.h"
 #include "view_direction_classification/common/error.h"
+#include "view_direction_classification/estimation/refinement_mode.h"
 #include "view_direction_classification/geometry/mug_mesh.h"
 #include "view_direction_classification/training/model_training.h"
 
@@ -219,6 +221,17 @@ void addEvaluateOptions(CLI::App& command, EvaluateOptions& options) {
       "/stream_dwell_s", "[s] the stream's camera stays this long at each view")
       ->capture_default_str()
       ->check(nonNegativeFinite());
+  // Refinement (doc/method.md, "Refinement"): by name, recorded by name.
+  std::map<std::string, RefinementMode> refinement_modes;
+  for (const auto& [name, mode] : refinementModeChoices()) refinement_modes[name] = mode;
+  command
+      .add_option("--refinement", options.settings.estimator.refinement,
+                  "geometric refinement after each view: none or icp (default: the estimator's, " +
+                      refinementModeName(EstimatorParameters{}.refinement) + ")")
+      ->transform(CLI::CheckedTransformer(refinement_modes));
+  options.recorded.push_back(
+      {nlohmann::json::json_pointer("/estimator/refinement"),
+       [](const EvaluationSettings& s) { return refinementModeName(s.estimator.refinement); }});
   command.add_flag("--baseline", options.baseline,
                    "also run the single-view PPF baseline (PCL) on the random planner's views");
   command.add_flag("--no-noise", options.no_noise, "render the views without sensor noise");

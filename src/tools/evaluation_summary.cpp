@@ -1,6 +1,8 @@
 #include "evaluation_summary.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -14,13 +16,33 @@ std::vector<double> toVector(const Eigen::VectorXd& values) {
   return std::vector<double>(values.data(), values.data() + values.size());
 }
 
-nlohmann::json settingSummary(const SettingErrors& setting, int views) {
-  const Eigen::VectorXd medians = setting.medianPerView();
+// A value, or null for NaN (JSON has no NaN).
+nlohmann::json numberOrNull(double value) {
+  return std::isnan(value) ? nlohmann::json(nullptr) : nlohmann::json(value);
+}
+
+// The medians after views 1, 5, 10, 20 and the last, keyed by the view count.
+nlohmann::json afterViews(const Eigen::VectorXd& medians, int views) {
   nlohmann::json after = nlohmann::json::object();
   for (const int v : {1, 5, 10, 20}) {
-    if (v <= views) after[std::to_string(v)] = medians(v - 1);
+    if (v <= views) after[std::to_string(v)] = numberOrNull(medians(v - 1));
   }
-  after[std::to_string(views)] = medians(views - 1);  // and after the last view
+  after[std::to_string(views)] = numberOrNull(medians(views - 1));  // and after the last view
+  return after;
+}
+
+nlohmann::json settingSummary(const SettingErrors& setting, int views) {
+  const Eigen::VectorXd medians = setting.medianPerView();
+  const nlohmann::json after = afterViews(medians, views);
+  nlohmann::json position_medians = nlohmann::json::array();
+  nlohmann::json position_after = nullptr;
+  if (setting.position_errors_mm.cols() == views) {
+    const Eigen::VectorXd positions = setting.medianPositionPerView();
+    for (Eigen::Index v = 0; v < positions.size(); ++v) {
+      position_medians.push_back(numberOrNull(positions(v)));
+    }
+    position_after = afterViews(positions, views);
+  }
   const std::optional<int> converged = viewsUntilMedianStaysBelow(medians, kConvergedDeg);
   return {
       {"visibility", visibilityLabel(setting.radius)},
@@ -28,6 +50,8 @@ nlohmann::json settingSummary(const SettingErrors& setting, int views) {
       {"skipped_views", setting.skipped_views},
       {"median_error_deg", std::vector<double>(medians.data(), medians.data() + medians.size())},
       {"median_error_after_views", after},
+      {"median_position_error_mm", position_medians},
+      {"median_position_error_mm_after_views", position_after},
       {"views_until_median_below_5deg", converged ? nlohmann::json(*converged) : nlohmann::json()},
       {"inside_cone90_fraction", toVector(setting.insideCone90PerView())}};
 }
@@ -99,15 +123,21 @@ nlohmann::json plannerSummary(const EvaluationResult& result, int views) {
             {"features", stage.features},
             {"classification", stage.classification},
             {"measurement", stage.measurement},
-            {"fusion", stage.fusion}}},
+            {"fusion", stage.fusion},
+            {"refinement", stage.refinement}}},
           {"settings", settings}};
 }
 
 nlohmann::json baselineSummary(const BaselineResult& baseline) {
   nlohmann::json settings = nlohmann::json::array();
   for (const auto& setting : baseline.result.settings) {
+    const double position_mm = setting.position_errors_mm.size() > 0
+                                   ? medianIgnoringNaN(setting.position_errors_mm.data(),
+                                                       setting.position_errors_mm.size())
+                                   : std::numeric_limits<double>::quiet_NaN();
     settings.push_back({{"visibility", visibilityLabel(setting.radius)},
                         {"median_error_deg", medianOverAllViews(setting)},
+                        {"median_position_error_mm", numberOrNull(position_mm)},
                         {"views_without_pose", setting.skipped_views}});
   }
   return {{"name", baseline.result.planner},

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -47,6 +49,17 @@ void expectErrorsInRange(const EvaluationResult& result, const EvaluationSetting
     EXPECT_GT(setting.cone90_deg.minCoeff(), 0.0);
     EXPECT_LE(setting.cone90_deg.maxCoeff(), 180.0);
     EXPECT_EQ(setting.insideCone90PerView().size(), settings.views);
+    // Positions: NaN only before the first fused view; the object (at the origin) is seen from
+    // 0.6 m, so an estimate is centimetres off at worst, never as far as the camera.
+    ASSERT_EQ(setting.position_errors_mm.rows(), settings.sequences);
+    ASSERT_EQ(setting.position_errors_mm.cols(), settings.views);
+    for (Eigen::Index i = 0; i < setting.position_errors_mm.size(); ++i) {
+      const double error = setting.position_errors_mm.data()[i];
+      if (std::isnan(error)) continue;
+      EXPECT_GE(error, 0.0);
+      EXPECT_LT(error, 300.0);
+    }
+    EXPECT_FALSE(std::isnan(setting.medianPositionPerView()(settings.views - 1)));
   }
 }
 
@@ -134,6 +147,8 @@ TEST(EvaluationTest, SingleViewMethodWithoutEstimatesCountsEveryViewAs180Degrees
   for (const auto& setting : result.settings) {
     EXPECT_EQ(setting.skipped_views, 2 * 2);
     EXPECT_EQ(setting.errors_deg, Eigen::MatrixXd::Constant(2, 2, 180.0));
+    EXPECT_TRUE(setting.position_errors_mm.array().isNaN().all());
+    EXPECT_TRUE(setting.medianPositionPerView().array().isNaN().all());
   }
 }
 
@@ -156,7 +171,18 @@ TEST(EvaluationTest, SingleViewMethodReturningTheTrueRotationScoresZero) {
       evaluateSingleView(oracle, "oracle", makeMug(), CameraIntrinsics{}, {}, settings);
   ASSERT_EQ(result.settings.size(), 1u);
   EXPECT_LT(result.settings[0].errors_deg.maxCoeff(), 1e-4);
+  EXPECT_LT(result.settings[0].position_errors_mm.maxCoeff(), 1e-9);
   EXPECT_EQ(result.settings[0].skipped_views, 0);
+}
+
+TEST(EvaluationTest, MedianIgnoringNaNSkipsMissingValues) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double values[] = {nan, 3.0, 1.0, nan};
+  EXPECT_EQ(medianIgnoringNaN(values, 4), 2.0);
+  EXPECT_EQ(medianIgnoringNaN(values, 3), 2.0);
+  EXPECT_EQ(medianIgnoringNaN(values + 1, 1), 3.0);
+  EXPECT_TRUE(std::isnan(medianIgnoringNaN(values, 1)));
+  EXPECT_TRUE(std::isnan(medianIgnoringNaN(values, 0)));
 }
 
 TEST(EvaluationTest, ViewsUntilTheMedianStaysBelowAThresholdIgnoreDipsThatComeBack) {

@@ -65,6 +65,19 @@ class EstimatorStartup(unittest.TestCase):
             assert_refused(self, NODE, ["~" + parameter, "got %s." % shown],
                            "_model:=/nonexistent.h5", preset={parameter: value})
 
+    def test_bad_refinement_settings_are_refused_naming_the_parameter(self):
+        assert_refused(self, NODE, ["~refinement", "one of 'none', 'icp'", "'gicp'"],
+                       "_model:=/nonexistent.h5", "_refinement:=gicp")
+        for parameter, value, shown in [("refinement_max_components", 0, "0"),
+                                        ("refinement_girdle_step_deg", 0.0, "0"),
+                                        ("refinement_girdle_step_deg", 181.0, "181"),
+                                        ("refinement_max_refined", -1, "-1"),
+                                        ("refinement_min_score", 1.5, "1.5")]:
+            assert_refused(self, NODE, ["~" + parameter, "got %s." % shown],
+                           "_model:=/nonexistent.h5", preset={parameter: value})
+        assert_refused(self, NODE, ["~refinement_max_refined", "must be an integer"],
+                       "_model:=/nonexistent.h5", "_refinement_max_refined:=2.5")
+
     def test_starts_with_its_config_file(self):
         assert_starts(self, NODE, "estimator.yaml", "reset",
                       "_model:=" + rospy.get_param("/startup_test_model"))

@@ -68,17 +68,18 @@ TEST(GeometryConversions, RefusesNaNTransformNamingItsFrames) {
 namespace vdc {
 namespace {
 
-TEST(GeometryConversions, PoseCovarianceHasPositionVarianceAndOrientationBlockOnly) {
-  Eigen::Matrix3d orientation;
+TEST(GeometryConversions, PoseCovarianceHasPositionAndOrientationBlocksOnly) {
+  Eigen::Matrix3d orientation, position;
   orientation << 0.04, 0.01, 0.0, 0.01, 0.09, 0.02, 0.0, 0.02, 0.16;
+  position << 4e-6, 1e-6, 0.0, 1e-6, 9e-6, -2e-6, 0.0, -2e-6, 2.5e-5;
   const geometry_msgs::PoseWithCovariance msg = toPoseWithCovarianceMsg(
-      Eigen::Vector3d(1, 2, 3), Eigen::Vector4d(1, 0, 0, 0), 0.0025, orientation);
+      Eigen::Vector3d(1, 2, 3), Eigen::Vector4d(1, 0, 0, 0), position, orientation);
   EXPECT_EQ(msg.pose.position.y, 2.0);
   EXPECT_EQ(msg.pose.orientation.w, 1.0);
   for (int i = 0; i < 6; ++i) {
     for (int j = 0; j < 6; ++j) {
       double expected = 0.0;
-      if (i < 3 && i == j) expected = 0.0025;
+      if (i < 3 && j < 3) expected = position(i, j);
       if (i >= 3 && j >= 3) expected = orientation(i - 3, j - 3);
       EXPECT_EQ(msg.covariance[i * 6 + j], expected) << "row " << i << " column " << j;
     }

@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <limits>
 #include <set>
 #include <sstream>
 #include <string>
@@ -13,6 +14,7 @@
 #include "evaluation_csv.h"
 #include "evaluation_labels.h"
 #include "evaluation_options.h"
+#include "evaluation_summary.h"
 #include "view_direction_classification/common/error.h"
 
 namespace vdc::tools {
@@ -26,6 +28,7 @@ TEST(EvaluationReportTest,
     SettingErrors setting;
     setting.radius = radius;
     setting.errors_deg = Eigen::MatrixXd::Constant(2, 3, 12.5);
+    setting.position_errors_mm = Eigen::MatrixXd::Constant(2, 3, 3.25);
     result.settings.push_back(setting);
   }
   EvaluationResult baseline = result;
@@ -38,7 +41,7 @@ TEST(EvaluationReportTest,
   ASSERT_TRUE(std::getline(lines, line));
   EXPECT_EQ(line,
             "planner,visibility,sequence,view,map_error_deg,event,time_s,views_fused,cone90_deg,"
-            "inside_cone90");
+            "inside_cone90,position_error_mm");
   int rows = 0;
   std::set<std::string> visibilities, planners;
   while (std::getline(lines, line)) {
@@ -47,12 +50,13 @@ TEST(EvaluationReportTest,
     std::istringstream row(line);
     for (std::string field; std::getline(row, field, ',');) fields.push_back(field);
     if (line.back() == ',') fields.push_back("");  // getline drops a last empty field
-    ASSERT_EQ(fields.size(), 10u) << line;
+    ASSERT_EQ(fields.size(), 11u) << line;
     planners.insert(fields[0]);
     visibilities.insert(fields[1]);
     EXPECT_GE(std::stoi(fields[3]), 1);
     EXPECT_LE(std::stoi(fields[3]), 3);
     EXPECT_DOUBLE_EQ(std::stod(fields[4]), 12.5);
+    EXPECT_DOUBLE_EQ(std::stod(fields[10]), 3.25);
   }
   EXPECT_EQ(rows, 2 * 2 * 2 * 3);
   EXPECT_EQ(planners, (std::set<std::string>{"random", "ppf_baseline"}));
@@ -66,15 +70,18 @@ TEST(EvaluationReportTest, ErrorsCsvRowsNameTheirSequenceFromZeroAndViewFromOne)
   setting.radius = 0.05;
   setting.errors_deg.resize(2, 1);
   setting.errors_deg << 1.23456, 90.0;
+  // No position estimate for the first (NaN): an empty cell.
+  setting.position_errors_mm.resize(2, 1);
+  setting.position_errors_mm << std::numeric_limits<double>::quiet_NaN(), 4.5;
   result.settings.push_back(setting);
   std::ostringstream csv;
   writeErrorsCsv(csv, {result});
   // Without trust signals (a single-view method) their cells are empty.
   EXPECT_EQ(csv.str(),
             "planner,visibility,sequence,view,map_error_deg,event,time_s,views_fused,cone90_deg,"
-            "inside_cone90\n"
-            "random,0.05,0,1,1.2346,view,,,,\n"
-            "random,0.05,1,1,90.0000,view,,,,\n");
+            "inside_cone90,position_error_mm\n"
+            "random,0.05,0,1,1.2346,view,,,,,\n"
+            "random,0.05,1,1,90.0000,view,,,,,4.5000\n");
 }
 
 TEST(EvaluationReportTest, ErrorsCsvGivesTheEstimatorsTrustSignalsAndWhetherTheTruthIsInside) {
@@ -91,8 +98,8 @@ TEST(EvaluationReportTest, ErrorsCsvGivesTheEstimatorsTrustSignalsAndWhetherTheT
   std::ostringstream csv;
   writeErrorsCsv(csv, {result});
   EXPECT_EQ(csv.str().substr(csv.str().find('\n') + 1),
-            "random,all,0,1,100.0000,view,,1,150.0000,1\n"
-            "random,all,0,2,8.0000,view,,2,7.5000,0\n");
+            "random,all,0,1,100.0000,view,,1,150.0000,1,\n"
+            "random,all,0,2,8.0000,view,,2,7.5000,0,\n");
 }
 
 TEST(EvaluationReportTest, ErrorsCsvGivesAStreamsFusionsThenItsViewEndsWithTheirTimes) {
@@ -108,10 +115,33 @@ TEST(EvaluationReportTest, ErrorsCsvGivesAStreamsFusionsThenItsViewEndsWithTheir
   std::ostringstream csv;
   writeErrorsCsv(csv, {}, {stream});
   EXPECT_EQ(csv.str().substr(csv.str().find('\n') + 1),
-            "stream_30hz,0.06,0,1,120.0000,fused,0.0000,1,160.0000,1\n"
-            "stream_30hz,0.06,0,1,20.0000,fused,3.1000,2,25.0000,1\n"
-            "stream_30hz,0.06,0,1,120.0000,dwell_end,2.0000,1,160.0000,1\n"
-            "stream_30hz,0.06,0,2,20.0000,dwell_end,6.5000,2,25.0000,1\n");
+            "stream_30hz,0.06,0,1,120.0000,fused,0.0000,1,160.0000,1,\n"
+            "stream_30hz,0.06,0,1,20.0000,fused,3.1000,2,25.0000,1,\n"
+            "stream_30hz,0.06,0,1,120.0000,dwell_end,2.0000,1,160.0000,1,\n"
+            "stream_30hz,0.06,0,2,20.0000,dwell_end,6.5000,2,25.0000,1,\n");
+}
+
+TEST(EvaluationReportTest, SummaryGivesMedianPositionErrorsPerViewIgnoringViewsWithoutOne) {
+  const double none = std::numeric_limits<double>::quiet_NaN();
+  SettingErrors setting;
+  setting.errors_deg = Eigen::MatrixXd::Constant(3, 2, 10.0);
+  setting.position_errors_mm.resize(3, 2);
+  setting.position_errors_mm << none, 3.0, none, none, none, 5.0;
+  EvaluationReport report;
+  report.settings.views = 2;
+  report.results.push_back({});
+  report.results.back().planner = "random";
+  report.results.back().settings.push_back(setting);
+  report.baseline.emplace();
+  report.baseline->result.planner = "ppf_baseline";
+  report.baseline->result.settings.push_back(setting);
+  const nlohmann::json summary = evaluationSummary(report);
+  const nlohmann::json& planned = summary["planners"][0]["settings"][0];
+  // After view 1 no sequence has a position: null, not 0 or NaN.
+  EXPECT_EQ(planned["median_position_error_mm"], nlohmann::json::parse("[null, 4.0]"));
+  EXPECT_EQ(planned["median_position_error_mm_after_views"],
+            nlohmann::json::parse(R"({"1": null, "2": 4.0})"));
+  EXPECT_EQ(summary["baseline"]["settings"][0]["median_position_error_mm"], 4.0);
 }
 
 TEST(EvaluationReportTest, VisibilityLabelsRoundTripAndBadOnesAreRefused) {
@@ -153,7 +183,8 @@ TEST_F(EvaluateOptionsTest, SummaryRecordsEverySettingARunUsedUnderItsKey) {
       "--sequences 3 --views 4 --candidates 9 --seed 5 --distance 0.5 --kappa 2.5 --n-feat 7 "
       "--max-components 11 --min-weight 0.01 --psum-exponent 2.5 --belief-weight-floor 0.001 "
       "--no-noise "
-      "--min-view-separation 0.2 --independent-view-separation 0.5 --stream-rate 15 --dwell 3");
+      "--min-view-separation 0.2 --independent-view-separation 0.5 --stream-rate 15 --dwell 3 "
+      "--refinement icp");
   ModelBundle model;
   model.parameters.distance = 0.7;
   const EvaluationSettings used =
@@ -174,8 +205,25 @@ TEST_F(EvaluateOptionsTest, SummaryRecordsEverySettingARunUsedUnderItsKey) {
                                      {"psum_exponent", 2.5},
                                      {"belief_weight_floor", 0.001},
                                      {"min_view_separation", 0.2},
-                                     {"independent_view_separation", 0.5}}}};
+                                     {"independent_view_separation", 0.5},
+                                     {"refinement", "icp"}}}};
   EXPECT_EQ(recordedSettings(options_, used), expected);
+}
+
+TEST_F(EvaluateOptionsTest, RefinementIsTheEstimatorsUnlessGivenAndUnknownNamesAreRefused) {
+  parse("");
+  EXPECT_EQ(parseEvaluateOptions(options_).settings.estimator.refinement,
+            EstimatorParameters{}.refinement);
+  CLI::App other{"evaluate"};
+  EvaluateOptions other_options;
+  addEvaluateOptions(other, other_options);
+  other.parse("--model m.h5 --mesh m.ply --out out --refinement none", false);
+  EXPECT_EQ(other_options.settings.estimator.refinement, RefinementMode::kNone);
+  CLI::App bad{"evaluate"};
+  EvaluateOptions bad_options;
+  addEvaluateOptions(bad, bad_options);
+  EXPECT_THROW(bad.parse("--model m.h5 --mesh m.ply --out out --refinement gicp", false),
+               CLI::ValidationError);
 }
 
 TEST_F(EvaluateOptionsTest, DistanceIsTheModelsUnlessGiven) {

@@ -94,6 +94,9 @@ struct SettingErrors {
   double radius = kAllVisible;
   double visible_fraction = 1.0;  // of the surface within radius of the anchors
   Eigen::MatrixXd errors_deg;     // sequences x views: error after each view [deg], in [0, 180]
+  // sequences x views: distance of the estimated object origin from the true one after each
+  // view [mm]; NaN where there is no position estimate.
+  Eigen::MatrixXd position_errors_mm;
   int skipped_views = 0;  // views without a result (estimator: no update; baseline: no pose)
   // The estimator's trust signals after each view (sequences x views; empty for a single-view
   // method): distinct views in the belief, and the radius [deg] around the MAP that holds 90 %
@@ -105,7 +108,12 @@ struct SettingErrors {
   // The calibration figure: the fraction of sequences whose MAP error after each view is at most
   // its cone90_deg (views entries; empty without trust signals). An honest belief gives ~0.9.
   Eigen::VectorXd insideCone90PerView() const;
+  // The same for the position errors, over the sequences that have one (NaN: none has).
+  Eigen::VectorXd medianPositionPerView() const;
 };
+
+// The median of the `count` values that are not NaN; NaN when none is.
+double medianIgnoringNaN(const double* values, Eigen::Index count);
 
 // The number of views after which the median error (medianPerView) falls under `threshold_deg`
 // and stays under it to the end of the sequence (a dip that comes back up does not count);
@@ -124,10 +132,11 @@ struct EvaluationResult {
 
 // Runs the protocol for one planner with the online estimator: per sequence and setting a fresh
 // OrientationEstimator fuses `views` views; after each the MAP error against the true q_WO is
-// recorded (rotationErrorDeg). The anchors (object frame) centre the visibility crop; any mesh
-// works. The (sequence, setting) runs are spread over OpenMP threads; each has its own
-// generators, so results do not depend on the thread count. Throws vdc::Error for bad settings,
-// a mesh or anchors that do not fit, or an estimator error.
+// recorded (rotationErrorDeg), and the position estimate's distance from the object origin. The
+// anchors (object frame) centre the visibility crop; any mesh works. The (sequence, setting) runs
+// are spread over OpenMP threads; each has its own generators, so results do not depend on the
+// thread count. Throws vdc::Error for bad settings, a mesh or anchors that do not fit, or an
+// estimator error.
 EvaluationResult evaluateEstimator(std::shared_ptr<const ModelBundle> model,
                                    const TriangleMesh& mesh,
                                    const std::vector<Eigen::Vector3d>& anchors,
@@ -139,9 +148,9 @@ using SingleViewMethod =
     std::function<std::optional<Eigen::Isometry3d>(const pcl::PointCloud<pcl::PointXYZ>&)>;
 
 // The same views as the random planner's, each judged alone by `method` (e.g. the PPF baseline):
-// error of its orientation R_WC R_CO against q_WO. A view without an estimate counts as 180
-// degrees (the worst) and as skipped. Runs sequentially (methods need not be thread-safe);
-// mean_update_ms is the method's mean wall time per view.
+// error of its orientation R_WC R_CO against q_WO, and of its translation. A view without an
+// estimate counts as 180 degrees (the worst), no position (NaN) and as skipped. Runs sequentially
+// (methods need not be thread-safe); mean_update_ms is the method's mean wall time per view.
 EvaluationResult evaluateSingleView(const SingleViewMethod& method, const std::string& name,
                                     const TriangleMesh& mesh, const CameraIntrinsics& intrinsics,
                                     const std::vector<Eigen::Vector3d>& anchors,

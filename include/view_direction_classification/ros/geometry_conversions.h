@@ -22,10 +22,10 @@ Eigen::Vector4d fromQuaternionMsg(const geometry_msgs::Quaternion& msg, const ch
 Eigen::Isometry3d toIsometry(const geometry_msgs::TransformStamped& transform);
 
 // A pose with its 6x6 covariance (row-major; x, y, z [m] then rotations about the fixed x, y, z
-// axes [rad], as geometry_msgs/PoseWithCovariance defines it): `position_variance` [m^2] on the
-// position diagonal, `orientation_covariance` [rad^2] in the rotation block, no cross terms.
+// axes [rad], as geometry_msgs/PoseWithCovariance defines it): `position_covariance` [m^2] in
+// the position block, `orientation_covariance` [rad^2] in the rotation block, no cross terms.
 geometry_msgs::PoseWithCovariance toPoseWithCovarianceMsg(
     const Eigen::Vector3d& position, const Eigen::Vector4d& orientation_wxyz,
-    double position_variance, const Eigen::Matrix3d& orientation_covariance);
+    const Eigen::Matrix3d& position_covariance, const Eigen::Matrix3d& orientation_covariance);
 
 }  // namespace vdc
