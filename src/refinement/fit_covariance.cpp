@@ -17,11 +17,7 @@ Eigen::Matrix3d translationCovariance(const ModelSurface& surface,
   Eigen::Matrix3d information = Eigen::Matrix3d::Zero();  // sum n n^T, object frame
   double squared_residuals = 0.0;
   int matches = 0;
-  std::vector<Eigen::Vector3f> queries;
-  queries.reserve(points_world.size());
-  for (const auto& p : points_world.points) {
-    queries.push_back(object_from_world * p.getVector3fMap());
-  }
+  const std::vector<Eigen::Vector3f> queries = objectFramePoints(points_world, object_from_world);
   std::vector<int> indices;
   std::vector<float> squared;
   surface.nearest().search(queries, &indices, &squared);

@@ -95,9 +95,7 @@ class CountingIcp
 double meanSquaredDistance(const ModelSurface& surface,
                            const pcl::PointCloud<pcl::PointNormal>& observed,
                            const Eigen::Isometry3f& object_from_world, double max_distance) {
-  std::vector<Eigen::Vector3f> queries;
-  queries.reserve(observed.size());
-  for (const auto& p : observed.points) queries.push_back(object_from_world * p.getVector3fMap());
+  const std::vector<Eigen::Vector3f> queries = objectFramePoints(observed, object_from_world);
   std::vector<int> matches;
   std::vector<float> squared;
   surface.nearest().search(queries, &matches, &squared);

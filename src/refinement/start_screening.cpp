@@ -23,11 +23,7 @@ double meanTruncatedDistance(const ModelSurface& surface,
                              const Eigen::Isometry3d& world_from_object, double truncation) {
   if (points_world.empty()) return truncation;
   const Eigen::Isometry3f object_from_world = world_from_object.inverse().cast<float>();
-  std::vector<Eigen::Vector3f> queries;
-  queries.reserve(points_world.size());
-  for (const auto& p : points_world.points) {
-    queries.push_back(object_from_world * p.getVector3fMap());
-  }
+  const std::vector<Eigen::Vector3f> queries = objectFramePoints(points_world, object_from_world);
   std::vector<int> indices;
   std::vector<float> squared;
   surface.nearest().search(queries, &indices, &squared);

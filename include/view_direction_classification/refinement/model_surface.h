@@ -46,4 +46,16 @@ class ModelSurface {
   Eigen::AlignedBox3d bounds_;
 };
 
+// The points of a cloud in the fixed frame, moved into the object frame of the model's samples:
+// the queries of a batched ModelSurface::nearest() search.
+template <typename Point>
+std::vector<Eigen::Vector3f> objectFramePoints(const pcl::PointCloud<Point>& points_world,
+                                               const Eigen::Isometry3f& object_from_world) {
+  std::vector<Eigen::Vector3f> points;
+  points.reserve(points_world.size());
+  for (const auto& p : points_world.points)
+    points.push_back(object_from_world * p.getVector3fMap());
+  return points;
+}
+
 }  // namespace vdc
