@@ -33,6 +33,7 @@ ParameterTable<EstimatorRosParameters> makeTable() {
       .add("max_components", core(&E::max_components), integerAtLeast(1))
       .add("min_features", core(&E::min_features), integerAtLeast(1))
       .add("min_weight", core(&E::min_weight), numberIn(0.0, 1.0, false))
+      .add("psum_exponent", core(&E::psum_exponent), numberAbove(0.0))
       .add("belief_weight_floor", core(&E::belief_weight_floor), numberIn(0.0, 1.0, false))
       .add("max_object_shift", core(&E::max_object_shift), numberAtLeast(0.0, "0: from the model"));
   // Frame selection on streams.

@@ -342,12 +342,14 @@ void OrientationEstimatorRos::reconfigure(OrientationEstimatorConfig& config, st
   }
   ROS_INFO_NAMED(private_node_.getNamespace(),
                  "%s: reconfigured (from the next cloud): n_feat %d, kappa %g, max_components %d, "
-                 "min_weight %g, min_view_separation %g, independent_view_separation %g, "
-                 "min_information_gain %g, converged_cone90_deg %g",
+                 "min_weight %g, psum_exponent %g, min_view_separation %g, "
+                 "independent_view_separation %g, min_information_gain %g, "
+                 "converged_cone90_deg %g, refinement %s",
                  private_node_.getNamespace().c_str(), config.n_feat, config.kappa,
-                 config.max_components, config.min_weight, config.min_view_separation,
-                 config.independent_view_separation, config.min_information_gain,
-                 config.converged_cone90_deg);
+                 config.max_components, config.min_weight, config.psum_exponent,
+                 config.min_view_separation, config.independent_view_separation,
+                 config.min_information_gain, config.converged_cone90_deg,
+                 config.refinement.c_str());
 }
 
 void OrientationEstimatorRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {

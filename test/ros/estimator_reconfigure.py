@@ -36,6 +36,25 @@ class EstimatorReconfigure(unittest.TestCase):
         self.assertEqual(rospy.get_param("/%s/max_components" % NODE), 5)
         self.client.update_configuration({"max_components": 20, "n_feat": 0})
 
+    def test_refinement_is_switched_live_and_its_knobs_checked(self):
+        config = self.client.update_configuration(
+            {"refinement": "icp", "refinement_girdle_step_deg": 15.0, "psum_exponent": 2.0})
+        self.assertEqual(config["refinement"], "icp")
+        self.assertAlmostEqual(config["refinement_girdle_step_deg"], 15.0)
+        self.assertAlmostEqual(config["psum_exponent"], 2.0)
+        self.assertEqual(rospy.get_param("/%s/refinement" % NODE), "icp")
+        # Inside the .cfg's range [0, 180], but the step must be positive: the whole request,
+        # the mode with it, is refused.
+        refused = self.client.update_configuration(
+            {"refinement": "none", "refinement_girdle_step_deg": 0.0})
+        self.assertEqual(refused["refinement"], "icp")
+        self.assertAlmostEqual(refused["refinement_girdle_step_deg"], 15.0)
+        # An unknown mode is refused too (the drop-down is a hint, dynparam sends any string).
+        unknown = self.client.update_configuration({"refinement": "gicp"})
+        self.assertEqual(unknown["refinement"], "icp")
+        self.client.update_configuration(
+            {"refinement": "none", "refinement_girdle_step_deg": 30.0, "psum_exponent": 1.0})
+
     def test_a_value_the_rule_refuses_keeps_the_previous_one(self):
         # A known state, as the server answers it (not the client's possibly stale copy).
         before = self.client.update_configuration({"min_weight": 0.001, "max_components": 20})
