@@ -2,8 +2,9 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <map>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "evaluation_labels.h"
 #include "view_direction_classification/common/error.h"
@@ -221,14 +222,19 @@ void addEvaluateOptions(CLI::App& command, EvaluateOptions& options) {
       "/stream_dwell_s", "[s] the stream's camera stays this long at each view")
       ->capture_default_str()
       ->check(nonNegativeFinite());
-  // Refinement (doc/method.md, "Refinement"): by name, recorded by name.
-  std::map<std::string, RefinementMode> refinement_modes;
-  for (const auto& [name, mode] : refinementModeChoices()) refinement_modes[name] = mode;
+  // Refinement (doc/method.md, "Refinement"): by name only, recorded by name. (CLI11's
+  // CheckedTransformer would also take the enum's number, "--refinement 1".)
+  std::vector<std::string> refinement_names;
+  for (const auto& choice : refinementModeChoices()) refinement_names.push_back(choice.first);
   command
-      .add_option("--refinement", options.settings.estimator.refinement,
-                  "geometric refinement after each view: none or icp (default: the estimator's, " +
-                      refinementModeName(EstimatorParameters{}.refinement) + ")")
-      ->transform(CLI::CheckedTransformer(refinement_modes));
+      .add_option_function<std::string>(
+          "--refinement",
+          [&options](const std::string& name) {
+            options.settings.estimator.refinement = parseRefinementMode(name);
+          },
+          "geometric refinement after each view: none or icp (default: the estimator's, " +
+              refinementModeName(EstimatorParameters{}.refinement) + ")")
+      ->check(CLI::IsMember(refinement_names));
   options.recorded.push_back(
       {nlohmann::json::json_pointer("/estimator/refinement"),
        [](const EvaluationSettings& s) { return refinementModeName(s.estimator.refinement); }});

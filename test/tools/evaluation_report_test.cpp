@@ -224,6 +224,12 @@ TEST_F(EvaluateOptionsTest, RefinementIsTheEstimatorsUnlessGivenAndUnknownNamesA
   addEvaluateOptions(bad, bad_options);
   EXPECT_THROW(bad.parse("--model m.h5 --mesh m.ply --out out --refinement gicp", false),
                CLI::ValidationError);
+  // The enum's number is not a name.
+  CLI::App numbered{"evaluate"};
+  EvaluateOptions numbered_options;
+  addEvaluateOptions(numbered, numbered_options);
+  EXPECT_THROW(numbered.parse("--model m.h5 --mesh m.ply --out out --refinement 1", false),
+               CLI::ValidationError);
 }
 
 TEST_F(EvaluateOptionsTest, DistanceIsTheModelsUnlessGiven) {
