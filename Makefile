@@ -5,6 +5,8 @@
 #   make fuzz           run each libFuzzer target of fuzz/ for FUZZ_SECONDS (default 60) under
 #                       ASan + UBSan (clang 14, build-asan/; doc/hardening.md)
 #   make test-sanitize  the gtest suite under ASan + UBSan (clang 14, build-asan/)
+#   make ci             what CI runs (.ci/run): make test, then fuzzing and the sanitizer suite
+#                       within a 38-minute budget (scripts/ci_all_stages.sh)
 BUILD_DIR ?= build
 JOBS ?= 2
 FUZZ_SECONDS ?= 60
@@ -12,7 +14,7 @@ export BUILD_DIR JOBS FUZZ_SECONDS
 # Debian's catkin needs Debian's python3 (a pyenv python3 lacks catkin_pkg).
 export PATH := /usr/bin:/bin:$(PATH)
 
-.PHONY: all deps deps-gui deps-sanitize build test fuzz test-sanitize demo bench format clean
+.PHONY: all deps deps-gui deps-sanitize build test ci fuzz test-sanitize demo bench format clean
 
 all: build
 
@@ -30,6 +32,9 @@ build: deps
 
 test: deps-gui build
 	@scripts/run_tests.sh
+
+ci:
+	@scripts/ci_all_stages.sh
 
 fuzz: deps-sanitize
 	@scripts/fuzz.sh
