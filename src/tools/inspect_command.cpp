@@ -41,6 +41,9 @@ nlohmann::json describe(const ModelBundle& bundle, const std::string& path) {
       {"views", static_cast<int>(bundle.view_directions.size())},
       {"clouds_per_view", bundle.parameters.clouds_per_view},
       {"seed", bundle.parameters.seed},
+      {"distance_range_m",
+       {bundle.parameters.distance * (1.0 - bundle.parameters.distance_jitter),
+        bundle.parameters.distance * (1.0 + bundle.parameters.distance_jitter)}},
       {"classifier_clusters", bundle.parameters.clusters},
       {"surface_points", static_cast<int>(bundle.surface_points.size())},
       {"extent_m",
@@ -63,6 +66,9 @@ void printText(const nlohmann::json& j) {
   std::printf("  mesh                %s\n", j["mesh"].get<std::string>().c_str());
   std::printf("  views               %d (x %d training clouds, seed %u)\n", j["views"].get<int>(),
               j["clouds_per_view"].get<int>(), j["seed"].get<unsigned>());
+  const auto& distances = j["distance_range_m"];
+  std::printf("  camera distances    %.2f-%.2f m (training clouds)\n", distances[0].get<double>(),
+              distances[1].get<double>());
   std::printf("  surface points      %d (%d observable)\n", j["surface_points"].get<int>(),
               j["observable_surface_points"].get<int>());
   const auto& extent = j["extent_m"];

@@ -58,6 +58,22 @@ TEST_F(VdcCliTest, UsageErrorsExitTwo) {
   EXPECT_EQ(runVdc("train --mesh m.ply").exit_code, 2);  // missing --out
   EXPECT_EQ(runVdc("train --mesh m.ply --out m.h5 --views 1").exit_code, 2);  // out of range
   EXPECT_EQ(runVdc("evaluate --model m.h5 --mesh m.ply --out e --sequences 0").exit_code, 2);
+  for (const char* range : {"1.5 0.5", "0 1", "1", "0.5 inf"}) {
+    EXPECT_EQ(
+        runVdc(std::string("train --mesh m.ply --out m.h5 --distance-range ") + range).exit_code, 2)
+        << range;
+  }
+}
+
+TEST_F(VdcCliTest, TrainingOverADistanceRangeIsRecordedInTheBundle) {
+  ASSERT_EQ(runVdc("mesh mug --out " + path("mug.ply")).exit_code, 0);
+  const ToolRun train =
+      runVdc("train --quick --views 4 --clouds-per-view 2 --mesh " + path("mug.ply") + " --out " +
+             path("m.h5") + " --distance-range 0.8 1.2");
+  ASSERT_EQ(train.exit_code, 0) << train.output;
+  const ToolRun inspect = runVdc("inspect " + path("m.h5"));
+  EXPECT_NE(inspect.output.find("camera distances    0.80-1.20 m"), std::string::npos)
+      << inspect.output;
 }
 
 TEST_F(VdcCliTest, BadStreamOptionsAreUsageErrorsNamingTheOption) {
