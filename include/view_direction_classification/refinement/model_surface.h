@@ -40,7 +40,7 @@ class ModelSurface {
   // Three orthogonal lines (object frame), best first, about which the surface is as nearly
   // rotationally symmetric as it gets: the axes about which a nearly symmetric object looks
   // nearly the same when turned, where ICP settles into the wrong turn (pose_refiner.h,
-  // restarts). See symmetryAxes() in model_surface.cpp.
+  // restarts). How they are found: nearSymmetryAxes() in model_surface.cpp.
   const std::vector<Eigen::ParametrizedLine<double, 3>>& symmetryAxes() const {
     return symmetry_axes_;
   }
