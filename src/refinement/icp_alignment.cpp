@@ -5,6 +5,7 @@
 #include <pcl/registration/transformation_estimation_point_to_plane_lls.h>
 #include <pcl/search/kdtree.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -116,6 +117,7 @@ struct IcpAlignment::Registration {
   std::shared_ptr<FiniteStepPointToPlane> step = std::make_shared<FiniteStepPointToPlane>();
   std::shared_ptr<const ModelSurface> surface;
   pcl::PointCloud<pcl::PointNormal>::Ptr observed;
+  IcpSettings settings;
 };
 
 IcpAlignment::IcpAlignment(std::shared_ptr<const ModelSurface> surface,
@@ -135,7 +137,7 @@ IcpAlignment::IcpAlignment(std::shared_ptr<const ModelSurface> surface,
   icp.setCorrespondenceEstimation(pcl::make_shared<BatchedCorrespondences>(surface));
   registration_->surface = surface;
   registration_->observed = observed_world;
-  icp.setMaximumIterations(settings.max_iterations);
+  registration_->settings = settings;
   icp.setMaxCorrespondenceDistance(settings.max_correspondence_distance);
   // Converged when a step moves the pose by less than the settings' translation and rotation, or
   // the mean squared distance changes by less than 0.01 % (PCL's "Euclidean fitness epsilon" is
@@ -150,23 +152,61 @@ IcpAlignment::IcpAlignment(std::shared_ptr<const ModelSurface> surface,
 IcpAlignment::~IcpAlignment() = default;
 
 IcpOutcome IcpAlignment::align(const Eigen::Isometry3d& start_object_from_world) {
+  return align(start_object_from_world, registration_->settings.max_iterations);
+}
+
+IcpOutcome IcpAlignment::align(const Eigen::Isometry3d& start_object_from_world,
+                               int max_iterations) {
+  const IcpSettings& settings = registration_->settings;
+  IcpOutcome outcome;
+  outcome.object_from_world = start_object_from_world;
+  // In chunks of settle_iterations: on noisy data PCL's criteria can miss a minimum that ICP
+  // circles (the steps alternate by a degree or two about a near-symmetric body's axis); a full
+  // chunk that ends where it began has settled there.
+  while (outcome.iterations < max_iterations) {
+    const int chunk = std::min(settings.settle_iterations, max_iterations - outcome.iterations);
+    const Eigen::Isometry3d before = outcome.object_from_world;
+    const IcpOutcome part = alignOnce(before, chunk);
+    outcome.iterations += part.iterations;
+    if (part.degenerate) {
+      outcome.degenerate = true;
+      return outcome;
+    }
+    outcome.object_from_world = part.object_from_world;
+    const Eigen::Isometry3d moved = before.inverse() * part.object_from_world;
+    const bool settled =
+        chunk == settings.settle_iterations &&
+        moved.translation().norm() < settings.settle_translation &&
+        Eigen::AngleAxisd(moved.linear()).angle() < settings.settle_rotation_deg * M_PI / 180.0;
+    if (part.converged || settled) {
+      outcome.converged = true;
+      break;
+    }
+  }
+  if (!outcome.converged) return outcome;
+  outcome.fitness = meanSquaredDistance(*registration_->surface, *registration_->observed,
+                                        outcome.object_from_world.cast<float>(),
+                                        registration_->icp.getMaxCorrespondenceDistance());
+  return outcome;
+}
+
+IcpOutcome IcpAlignment::alignOnce(const Eigen::Isometry3d& start_object_from_world,
+                                   int max_iterations) {
   auto& icp = registration_->icp;
+  icp.setMaximumIterations(max_iterations);
   pcl::PointCloud<pcl::PointNormal> aligned;
   registration_->step->degenerate = false;
   icp.align(aligned, start_object_from_world.matrix().cast<float>());
   IcpOutcome outcome;
   outcome.iterations = icp.iterations();
   const Eigen::Matrix4d transform = icp.getFinalTransformation().cast<double>();
-  outcome.degenerate = registration_->step->degenerate;
-  outcome.converged = icp.hasConverged() && !outcome.degenerate && transform.allFinite();
-  if (!outcome.converged) return outcome;
+  outcome.degenerate = registration_->step->degenerate || !transform.allFinite();
+  if (outcome.degenerate) return outcome;
+  outcome.converged = icp.hasConverged();
   // Re-orthonormalise: ICP composes its steps in single precision.
   const Eigen::Quaterniond rotation(Eigen::Matrix3d(transform.topLeftCorner<3, 3>()));
   outcome.object_from_world.linear() = rotation.normalized().toRotationMatrix();
   outcome.object_from_world.translation() = transform.topRightCorner<3, 1>();
-  outcome.fitness = meanSquaredDistance(*registration_->surface, *registration_->observed,
-                                        outcome.object_from_world.cast<float>(),
-                                        icp.getMaxCorrespondenceDistance());
   return outcome;
 }
 

@@ -19,13 +19,19 @@ struct IcpSettings {
   // Converged when a step moves the pose by less than both of these.
   double convergence_translation = 1e-4;  // [m]
   double convergence_rotation_deg = 0.05;
+  // Also converged when settle_iterations in a row move the pose by less than both of these in
+  // all: ICP circling a minimum that noise keeps its single steps from settling in.
+  int settle_iterations = 10;
+  double settle_translation = 5e-4;  // [m]
+  double settle_rotation_deg = 1.0;
 };
 
 struct IcpOutcome {
   bool converged = false;
   bool degenerate = false;  // a step was singular (the surface leaves a motion unconstrained)
+  // Where ICP stopped: the converged pose, or (not converged, not degenerate) the last one.
   Eigen::Isometry3d object_from_world = Eigen::Isometry3d::Identity();
-  double fitness = 0.0;  // [m^2]
+  double fitness = 0.0;  // [m^2] (converged only)
   int iterations = 0;
 };
 
@@ -39,8 +45,13 @@ class IcpAlignment {
 
   // start: object_from_world of the hypothesis.
   IcpOutcome align(const Eigen::Isometry3d& start_object_from_world);
+  // The same with another iteration limit (a short alignment that screens restarts).
+  IcpOutcome align(const Eigen::Isometry3d& start_object_from_world, int max_iterations);
 
  private:
+  // One run of PCL's ICP (its own convergence criteria).
+  IcpOutcome alignOnce(const Eigen::Isometry3d& start_object_from_world, int max_iterations);
+
   struct Registration;
   std::unique_ptr<Registration> registration_;
 };

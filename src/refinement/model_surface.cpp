@@ -1,5 +1,7 @@
 #include "view_direction_classification/refinement/model_surface.h"
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -8,6 +10,55 @@
 #include "view_direction_classification/common/error.h"
 
 namespace vdc {
+
+namespace {
+
+// The point c that puts the line (c, d) closest to being the surface's axis of revolution: on a
+// surface of revolution about it, every normal n at p meets the line, n . (d x (p - c)) = 0, i.e.
+// (p - c) . w = 0 with w = n x d; least squares in c across d (the part along d is the
+// centroid's, which the condition leaves free).
+Eigen::Vector3d axisPoint(const pcl::PointCloud<pcl::PointNormal>& samples,
+                          const Eigen::Vector3d& centroid, const Eigen::Vector3d& d) {
+  Eigen::Matrix3d normal_matrix = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d right = Eigen::Vector3d::Zero();
+  for (const auto& sample : samples.points) {
+    const Eigen::Vector3d p = sample.getVector3fMap().cast<double>() - centroid;
+    const Eigen::Vector3d w = sample.getNormalVector3fMap().cast<double>().cross(d);
+    normal_matrix += w * w.transpose();
+    right += w * p.dot(w);
+  }
+  // w is orthogonal to d, so the system is singular along d: regularise it there.
+  normal_matrix += d * d.transpose() * (normal_matrix.trace() + 1e-12);
+  return centroid + normal_matrix.ldlt().solve(right);
+}
+
+// The axes of (near) rotational symmetry: a surface of revolution about direction d through c
+// has every (p - c) x n orthogonal to d, so d is the eigenvector of the smallest eigenvalue of
+// the sum of their outer products; the other two eigenvectors are the next best. Unlike the
+// samples' principal axes, which a mug's handle tilts by 10 degrees off the body's axis, the
+// body's normals fix this one. Each direction is placed through its own best point.
+std::vector<Eigen::ParametrizedLine<double, 3>> nearSymmetryAxes(
+    const pcl::PointCloud<pcl::PointNormal>& samples) {
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  for (const auto& sample : samples.points) centroid += sample.getVector3fMap().cast<double>();
+  centroid /= static_cast<double>(samples.size());
+  Eigen::Matrix3d moments = Eigen::Matrix3d::Zero();
+  for (const auto& sample : samples.points) {
+    const Eigen::Vector3d m = (sample.getVector3fMap().cast<double>() - centroid)
+                                  .cross(sample.getNormalVector3fMap().cast<double>());
+    moments += m * m.transpose();
+  }
+  const Eigen::Matrix3d directions =
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(moments).eigenvectors();
+  std::vector<Eigen::ParametrizedLine<double, 3>> axes;
+  for (int i = 0; i < 3; ++i) {
+    const Eigen::Vector3d d = directions.col(i);
+    axes.emplace_back(axisPoint(samples, centroid, d), d);
+  }
+  return axes;
+}
+
+}  // namespace
 
 ModelSurface::ModelSurface(const std::vector<Eigen::Vector3f>& points,
                            const std::vector<Eigen::Vector3f>& normals,
@@ -48,6 +99,6 @@ ModelSurface::ModelSurface(const std::vector<Eigen::Vector3f>& points,
   samples.reserve(cloud_->size());
   for (const auto& point : cloud_->points) samples.push_back(point.getVector3fMap());
   nearest_ = std::make_unique<const NearestPoints>(std::move(samples));
+  symmetry_axes_ = nearSymmetryAxes(*cloud_);
 }
-
 }  // namespace vdc

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <numeric>
 #include <sstream>
 #include <string>
 #include <unordered_map>
@@ -15,6 +16,7 @@
 #include "fit_covariance.h"
 #include "icp_alignment.h"
 #include "start_screening.h"
+#include "turned_starts.h"
 #include "view_direction_classification/common/error.h"
 #include "view_direction_classification/common/quaternion.h"
 #include "view_direction_classification/common/rotation_error.h"
@@ -32,6 +34,7 @@ void checkPositive(double value, const char* name) {
 
 void checkParameters(const RefinementParameters& p) {
   orientationHypotheses(BinghamMixture(), p.hypotheses);  // throws for invalid ones
+  checkVerificationParameters(p.verification);
   checkPositive(p.model_spacing, "model_spacing");
   checkPositive(p.scene_voxel, "scene_voxel");
   checkPositive(p.max_extent_ratio, "max_extent_ratio");
@@ -61,6 +64,18 @@ void checkParameters(const RefinementParameters& p) {
   }
   if (!(p.min_score >= -1.0 && p.min_score <= 1.0)) {
     throw Error("refinement's min_score must be in [-1, 1], got " + std::to_string(p.min_score));
+  }
+  if (p.restart_screening_iterations < 1) {
+    throw Error("refinement's restart_screening_iterations must be at least 1, got " +
+                std::to_string(p.restart_screening_iterations));
+  }
+  if (p.restart_seeds < 0 || p.restart_refined < 1) {
+    throw Error("refinement's restart_seeds must be >= 0 and restart_refined >= 1, got " +
+                std::to_string(p.restart_seeds) + " and " + std::to_string(p.restart_refined));
+  }
+  if (!(p.restart_step_deg > 0.0 && p.restart_step_deg <= 180.0)) {
+    throw Error("refinement's restart_step_deg must be in (0, 180], got " +
+                std::to_string(p.restart_step_deg));
   }
   if (!(p.keep_score_margin >= 0.0) || !std::isfinite(p.keep_score_margin)) {
     throw Error("refinement's keep_score_margin must be >= 0 and finite, got " +
@@ -222,9 +237,10 @@ Eigen::Vector4d orientationOf(const Eigen::Isometry3d& pose) {
   return q(0) < 0.0 ? Eigen::Vector4d(-q) : q;
 }
 
-// Empty when the refined pose is accepted, else why not.
+// Empty when the refined pose is accepted, else why not. reference: the belief's orientation the
+// pose's chain of starts began from, whose density the result must stay near.
 std::string rejection(const RefinedPose& pose, const IcpOutcome& icp, const BinghamMixture& belief,
-                      const RefinementParameters& parameters) {
+                      const Eigen::Vector4d& reference, const RefinementParameters& parameters) {
   if (icp.degenerate) return "ICP was degenerate: the points leave a motion unconstrained";
   if (!icp.converged) return "ICP did not converge";
   const double moved = (pose.world_from_object.translation() - pose.start.translation()).norm();
@@ -239,7 +255,7 @@ std::string rejection(const RefinedPose& pose, const IcpOutcome& icp, const Bing
            std::to_string(parameters.min_score);
   }
   if (belief.logDensity(pose.orientation) <
-      belief.logDensity(pose.start_orientation) - parameters.max_log_density_drop) {
+      belief.logDensity(reference) - parameters.max_log_density_drop) {
     return "the refined orientation left the belief's credible region";
   }
   return "";
@@ -269,6 +285,88 @@ std::vector<RefinedPose> keptPoses(const std::vector<RefinedPose>& tried,
     if (!duplicate) kept.push_back(pose);
   }
   return kept;
+}
+
+// What aligning and verifying a start takes: the same for the belief's starts and restarts.
+struct Aligner {
+  IcpAlignment* icp;
+  const PoseVerifier* verifier;
+  const BinghamMixture* belief;
+  const RefinementParameters* parameters;
+
+  // Aligns *pose from its start (whose start_score is set) and verifies the result.
+  void alignAndVerify(const Eigen::Vector4d& reference, RefinedPose* pose) const {
+    pose->screened_in = true;
+    const IcpOutcome outcome = icp->align(pose->start.inverse());
+    pose->converged = outcome.converged;
+    pose->world_from_object = outcome.converged ? outcome.object_from_world.inverse() : pose->start;
+    pose->orientation = orientationOf(pose->world_from_object);
+    pose->fitness = outcome.fitness;
+    pose->icp_iterations = outcome.iterations;
+    if (outcome.converged) pose->score = verifier->score(pose->world_from_object);
+    pose->rejection = rejection(*pose, outcome, *belief, reference, *parameters);
+    pose->accepted = pose->rejection.empty();
+  }
+};
+
+// Indices of the `count` best-scoring distinct converged poses, best first.
+std::vector<std::size_t> restartSeeds(const std::vector<RefinedPose>& tried, int count,
+                                      const RefinementParameters& parameters) {
+  std::vector<std::size_t> converged;
+  for (std::size_t i = 0; i < tried.size(); ++i) {
+    if (tried[i].converged) converged.push_back(i);
+  }
+  std::stable_sort(converged.begin(), converged.end(), [&](std::size_t a, std::size_t b) {
+    return tried[a].score.score() > tried[b].score.score();
+  });
+  std::vector<std::size_t> seeds;
+  for (const std::size_t index : converged) {
+    if (static_cast<int>(seeds.size()) >= count) break;
+    const bool duplicate = std::any_of(seeds.begin(), seeds.end(), [&](std::size_t seed) {
+      return sameAs(tried[index], tried[seed], parameters);
+    });
+    if (!duplicate) seeds.push_back(index);
+  }
+  return seeds;
+}
+
+// The seed turned about the model's symmetry axes (turned_starts.h), each turn screened by a short
+// ICP and verified; the restart_refined best aligned in full and verified. Appended to *tried.
+void restartFrom(std::size_t seed_index, const ModelSurface& surface, const Aligner& aligner,
+                 std::vector<RefinedPose>* tried) {
+  const RefinedPose seed = (*tried)[seed_index];
+  const RefinementParameters& parameters = *aligner.parameters;
+  std::vector<RefinedPose> turned;
+  std::vector<double> screening_scores;
+  for (const Eigen::Isometry3d& start :
+       turnedStarts(surface, seed.world_from_object, parameters.restart_step_deg)) {
+    RefinedPose pose;
+    pose.start = pose.world_from_object = start;
+    pose.start_orientation = pose.orientation = orientationOf(start);
+    pose.component = seed.component;
+    pose.restarted_from = static_cast<int>(seed_index);
+    const IcpOutcome shortly =
+        aligner.icp->align(start.inverse(), parameters.restart_screening_iterations);
+    screening_scores.push_back(
+        shortly.degenerate ? -1.0
+                           : aligner.verifier->score(shortly.object_from_world.inverse()).score());
+    pose.rejection = "screened out: after " +
+                     std::to_string(parameters.restart_screening_iterations) +
+                     " ICP iterations it verifies worse than its seed's " +
+                     std::to_string(parameters.restart_refined) + " best turns";
+    turned.push_back(pose);
+  }
+  std::vector<std::size_t> order(turned.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return screening_scores[a] > screening_scores[b];
+  });
+  order.resize(std::min(order.size(), static_cast<std::size_t>(parameters.restart_refined)));
+  for (const std::size_t index : order) {
+    turned[index].start_score = aligner.verifier->score(turned[index].start);
+    aligner.alignAndVerify(seed.start_orientation, &turned[index]);
+  }
+  tried->insert(tried->end(), turned.begin(), turned.end());
 }
 
 }  // namespace
@@ -330,18 +428,15 @@ RefinementResult PoseRefiner::refine(const BinghamMixture& belief, const Eigen::
       surface_, icpSource(*evenSubsample(*thinned, parameters_.icp_points)),
       {parameters_.max_iterations, parameters_.max_correspondence_distance,
        parameters_.convergence_translation, parameters_.convergence_rotation_deg});
+  const Aligner aligner{&alignment, &verifier, &belief, &parameters_};
   for (const std::size_t index : bestStarts(distances, components, parameters_.max_refined)) {
     RefinedPose& pose = result.tried[index];
-    pose.screened_in = true;
     pose.start_score = verifier.score(pose.start);
-    const IcpOutcome icp = alignment.align(pose.start.inverse());
-    pose.world_from_object = icp.converged ? icp.object_from_world.inverse() : pose.start;
-    pose.orientation = orientationOf(pose.world_from_object);
-    pose.fitness = icp.fitness;
-    pose.icp_iterations = icp.iterations;
-    if (icp.converged) pose.score = verifier.score(pose.world_from_object);
-    pose.rejection = rejection(pose, icp, belief, parameters_);
-    pose.accepted = pose.rejection.empty();
+    aligner.alignAndVerify(pose.start_orientation, &pose);
+  }
+  for (const std::size_t seed :
+       restartSeeds(result.tried, parameters_.restart_seeds, parameters_)) {
+    restartFrom(seed, *surface_, aligner, &result.tried);
   }
   result.kept = keptPoses(result.tried, parameters_);
   for (RefinedPose& pose : result.kept) {

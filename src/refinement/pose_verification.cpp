@@ -21,13 +21,20 @@ void checkNonNegative(double value, const char* name) {
 
 }  // namespace
 
+void checkVerificationParameters(const VerificationParameters& parameters) {
+  checkNonNegative(parameters.inlier_distance, "inlier_distance");
+  checkNonNegative(parameters.free_space_tolerance, "free_space_tolerance");
+  checkNonNegative(parameters.min_facing_cosine, "min_facing_cosine");
+  checkNonNegative(parameters.depth_noise_at_1m, "depth_noise_at_1m");
+  checkNonNegative(parameters.inlier_sigmas, "inlier_sigmas");
+  checkNonNegative(parameters.free_space_sigmas, "free_space_sigmas");
+}
+
 PoseVerifier::PoseVerifier(std::shared_ptr<const ModelSurface> surface,
                            const std::vector<RefinementView>& views,
                            VerificationParameters parameters)
     : surface_(std::move(surface)), parameters_(parameters) {
-  checkNonNegative(parameters_.inlier_distance, "inlier_distance");
-  checkNonNegative(parameters_.free_space_tolerance, "free_space_tolerance");
-  checkNonNegative(parameters_.min_facing_cosine, "min_facing_cosine");
+  checkVerificationParameters(parameters_);
   neighbour_radius_ = std::max(0.004, 2.0 * surface_->spacing());
   for (const RefinementView& view : views) {
     if (!view.points || view.points->empty()) continue;
@@ -40,6 +47,16 @@ PoseVerifier::PoseVerifier(std::shared_ptr<const ModelSurface> surface,
     indexed->camera_from_world = view.world_from_camera.inverse();
     views_.push_back(std::move(indexed));
   }
+}
+
+double PoseVerifier::inlierTolerance(double z) const {
+  return std::max(parameters_.inlier_distance,
+                  parameters_.inlier_sigmas * parameters_.depth_noise_at_1m * z * z);
+}
+
+double PoseVerifier::freeSpaceTolerance(double z) const {
+  return std::max(parameters_.free_space_tolerance,
+                  parameters_.free_space_sigmas * parameters_.depth_noise_at_1m * z * z);
 }
 
 VerificationScore PoseVerifier::score(const Eigen::Isometry3d& world_from_object) const {
@@ -74,7 +91,7 @@ void PoseVerifier::addViewScore(const IndexedView& view, const Eigen::Isometry3d
     if (index[i] < 0 || squared[i] > radius_sq) continue;
     const auto& sample = model[index[i]];
     const float offset = sample.getNormalVector3fMap().dot(queries[i] - sample.getVector3fMap());
-    if (std::abs(offset) <= parameters_.inlier_distance) ++*inliers;
+    if (std::abs(offset) <= inlierTolerance((*view.points)[i].z)) ++*inliers;
   }
 
   // The predicted half: is each camera-facing sample where the camera saw a surface?
@@ -97,7 +114,8 @@ void PoseVerifier::addViewScore(const IndexedView& view, const Eigen::Isometry3d
       ++*violations;  // predicted where nothing was seen
       continue;
     }
-    if (predicted[i].z() < (*view.points)[index[i]].z - parameters_.free_space_tolerance) {
+    const float observed_z = (*view.points)[index[i]].z;
+    if (predicted[i].z() < observed_z - freeSpaceTolerance(observed_z)) {
       ++*violations;
     }
   }

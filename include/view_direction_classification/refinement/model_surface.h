@@ -37,6 +37,13 @@ class ModelSurface {
   double spacing() const { return spacing_; }
   const Eigen::AlignedBox3d& bounds() const { return bounds_; }
   double diagonal() const { return bounds_.diagonal().norm(); }
+  // Three orthogonal lines (object frame), best first, about which the surface is as nearly
+  // rotationally symmetric as it gets: the axes about which a nearly symmetric object looks
+  // nearly the same when turned, where ICP settles into the wrong turn (pose_refiner.h,
+  // restarts). How they are found: nearSymmetryAxes() in model_surface.cpp.
+  const std::vector<Eigen::ParametrizedLine<double, 3>>& symmetryAxes() const {
+    return symmetry_axes_;
+  }
 
  private:
   pcl::PointCloud<pcl::PointNormal>::Ptr cloud_;
@@ -44,6 +51,7 @@ class ModelSurface {
   std::unique_ptr<const NearestPoints> nearest_;
   double spacing_;
   Eigen::AlignedBox3d bounds_;
+  std::vector<Eigen::ParametrizedLine<double, 3>> symmetry_axes_;
 };
 
 // The points of a cloud in the fixed frame, moved into the object frame of the model's samples:

@@ -50,6 +50,18 @@ struct RefinementParameters {
   // ln 1000 by default).
   double min_score = 0.8;
   double max_log_density_drop = 6.9;
+  // Restarts (doc/method.md, "Refinement"): ICP on a nearly symmetric object converges to the
+  // right body in the wrong turn (a mug's handle on the wrong side), which no other start may
+  // reach. The restart_seeds best-scoring distinct converged poses are each turned about the
+  // model's axis of near symmetry (model_surface.h) by every multiple of restart_step_deg and by
+  // half a turn about its other two axes; each turned pose is aligned by a short ICP of
+  // restart_screening_iterations and verified (as it stands the body's misfit hides the handle),
+  // and the restart_refined best of each seed aligned in full and verified like any start
+  // (restart_seeds 0: no restarts).
+  int restart_seeds = 1;
+  double restart_step_deg = 30.0;
+  int restart_screening_iterations = 10;
+  int restart_refined = 2;
   // Accepted poses scoring within keep_score_margin of the best are kept; poses within
   // duplicate_angle_deg and duplicate_distance of a better one are the same pose.
   double keep_score_margin = 0.03;
@@ -73,7 +85,11 @@ struct RefinedPose {
   // [m] The start's screening distance: the observed points' mean truncated distance to the model.
   double screening_distance = 0.0;
   bool screened_in = false;  // among its component's max_refined best: aligned and verified
-  double fitness = 0.0;      // [m^2] ICP's mean squared correspondence distance
+  // The index in RefinementResult::tried of the converged pose this start was turned from (a
+  // restart); -1 for the belief's own starts.
+  int restarted_from = -1;
+  bool converged = false;  // ICP converged (and was not degenerate)
+  double fitness = 0.0;    // [m^2] ICP's mean squared correspondence distance
   int icp_iterations = 0;
   // [m^2, fixed frame] Covariance of world_from_object's translation from the fit (kept poses
   // only; zero otherwise).

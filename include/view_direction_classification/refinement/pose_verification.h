@@ -23,15 +23,28 @@ struct RefinementView {
 
 struct VerificationParameters {
   // [m] An observed point is explained by the model when a model sample lies within twice the
-  // samples' spacing (at least 4 mm) and the point is within inlier_distance of its tangent plane.
+  // samples' spacing (at least 4 mm) and the point is within inlier_distance of its tangent plane
+  // (or inlier_sigmas depth noise sigmas at its depth, when that is more).
   double inlier_distance = 0.003;
-  // [m] A model sample that faces the camera and lies this much in front of the observed surface
-  // along its ray occupies space the camera saw through.
+  // [m] A model sample that faces the camera and lies this much (or free_space_sigmas depth noise
+  // sigmas at its depth, when that is more) in front of the observed surface along its ray
+  // occupies space the camera saw through.
   double free_space_tolerance = 0.008;
+  // [m] The sensor's depth noise (standard deviation) at 1 m; it grows with the square of the
+  // depth, as a stereo or structured-light camera's does. 5 mm covers a stereo head of 0.1 m
+  // baseline at a fifth of a pixel and is above a Kinect's (1.3 mm at 0.6 m, depth_noise.h): on
+  // PCL's real stereo scan of a mug at 0.77 m (doc/evaluation.md, "Real scan") the fixed
+  // 3 / 8 mm tolerances leave the right pose at 0.74, below min_score, wrong ones at 0.60-0.67.
+  double depth_noise_at_1m = 0.005;
+  double inlier_sigmas = 2.0;
+  double free_space_sigmas = 4.0;
   // Samples facing the camera at a cosine below this (grazing, near the silhouette) are not
   // predicted: their visibility depends on sub-pixel geometry.
   double min_facing_cosine = 0.3;
 };
+
+// Throws vdc::Error for negative or non-finite parameters.
+void checkVerificationParameters(const VerificationParameters& parameters);
 
 // The render-and-compare score of one pose (doc/method.md, "Refinement"), computed on points: the
 // model's camera-facing samples are its predicted depth, the observed points the measured one.
@@ -71,6 +84,10 @@ class PoseVerifier {
 
   std::shared_ptr<const ModelSurface> surface_;
   std::vector<std::unique_ptr<IndexedView>> views_;
+  // [m] The tolerances at depth z (camera frame).
+  double inlierTolerance(double z) const;
+  double freeSpaceTolerance(double z) const;
+
   VerificationParameters parameters_;
   double neighbour_radius_;
 };

@@ -1,0 +1,25 @@
+#pragma once
+
+// Restarts from a converged pose (private to refinement; doc/method.md, "Refinement"): a nearly
+// symmetric object (a mug's body, a box) fits its points almost as well turned about one of its
+// axes of near symmetry, and ICP that converged there stays in that local minimum (the mug's
+// handle on the wrong side). The same pose turned about each axis is a start ICP can reach the
+// right turn from.
+
+#include <Eigen/Geometry>
+
+#include <vector>
+
+#include "view_direction_classification/refinement/model_surface.h"
+
+namespace vdc {
+
+// world_from_object turned about the model's best symmetry axis (model_surface.h) by every
+// multiple of step_deg short of a full turn (round(360 / step_deg) - 1 turns), and a half turn
+// about each of the other two (the flips that leave a box or a mirror-symmetric object's
+// silhouette in place).
+std::vector<Eigen::Isometry3d> turnedStarts(const ModelSurface& surface,
+                                            const Eigen::Isometry3d& world_from_object,
+                                            double step_deg);
+
+}  // namespace vdc
