@@ -59,7 +59,7 @@ void checkParameters(const PpfParameters& p) {
 pcl::PointCloud<pcl::PointNormal>::Ptr sampledScene(
     const pcl::PointCloud<pcl::PointNormal>::ConstPtr& scene, const PpfParameters& parameters) {
   pcl::PointCloud<pcl::PointNormal>::Ptr sampled(new pcl::PointCloud<pcl::PointNormal>);
-  if (scene->empty()) return sampled;
+  if (!scene || scene->empty()) return sampled;
   pcl::UniformSampling<pcl::PointNormal> sampling;
   sampling.setInputCloud(scene);
   sampling.setRadiusSearch(parameters.scene_spacing);

@@ -108,6 +108,7 @@ TEST_F(PpfBaselineTest, EmptyAllNanAndTinyCloudsGiveNoPose) {
   pcl::PointCloud<pcl::PointXYZ> three;
   for (int i = 0; i < 3; ++i) three.push_back(pcl::PointXYZ(0.01f * i, 0.0f, 0.6f));
   EXPECT_FALSE(baseline_->match(three).found);
+  EXPECT_FALSE(baseline_->matchScene(nullptr).found);
 }
 
 TEST(PpfBaselineParametersTest, InvalidParametersAndEmptyMeshesAreRefused) {

@@ -72,8 +72,8 @@ class PpfBaseline {
   // aligns to (baseline_icp.h).
   pcl::PointCloud<pcl::PointNormal>::Ptr sceneWithNormals(
       const pcl::PointCloud<pcl::PointXYZ>& camera_cloud) const;
-  // match() on a scene sceneWithNormals made (sampled to scene_spacing here). milliseconds counts
-  // the matching alone.
+  // match() on a scene sceneWithNormals made (sampled to scene_spacing here; null or too small:
+  // found = false). milliseconds counts the matching alone.
   PpfMatch matchScene(const pcl::PointCloud<pcl::PointNormal>::ConstPtr& scene);
 
   const PpfParameters& parameters() const { return parameters_; }
