@@ -3,8 +3,9 @@
 Usage: plot_evaluation.py DIR/summary.json OUT_DIR
 
 Writes OUT_DIR/evaluation_<planner>.png for each planner: the median MAP error over the
-sequences after each view, one line per visibility setting, with the single-view PPF baseline's
-median error of each setting as a dashed horizontal line of the same colour. When several planners
+sequences after each view, one line per visibility setting, with the single-view baselines'
+median error of each setting as horizontal lines of the same colour (PPF dashed, PPF followed by
+ICP dotted). When several planners
 were run, OUT_DIR/evaluation_planners.png compares them, one panel per visibility setting.
 With camera streams (`--stream-rate`), OUT_DIR/evaluation_<stream>.png shows, per visibility
 setting, each sequence's MAP error against the stream's time (a step at every fused frame, from
@@ -51,26 +52,30 @@ def floor(values):
     return [max(v, 0.5) for v in values]
 
 
-def plot_planner(summary, planner, baseline, out_path):
+# Line styles of the single-view baselines in summary.json, in the order drawn.
+BASELINE_STYLES = [("baseline", "--"), ("baseline_icp", ":")]
+
+
+def plot_planner(summary, planner, out_path):
     views = summary["views"]
     figure, ax = plt.subplots(figsize=(7.5, 5))
     colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
-    baseline_by_setting = {}
-    if baseline:
-        baseline_by_setting = {s["visibility"]: s["median_error_deg"] for s in baseline["settings"]}
+    baselines = [(summary[key], style) for key, style in BASELINE_STYLES if summary.get(key)]
     for k, setting in enumerate(planner["settings"]):
         colour = colours[k % len(colours)]
         x = list(range(1, len(setting["median_error_deg"]) + 1))
         ax.plot(x, floor(setting["median_error_deg"]), marker="o", markersize=3, color=colour,
                 label=setting_label(setting))
-        if setting["visibility"] in baseline_by_setting:
-            ax.axhline(max(baseline_by_setting[setting["visibility"]], 0.5), color=colour,
-                       linestyle="--", linewidth=1, alpha=0.7)
+        for baseline, style in baselines:
+            for s in baseline["settings"]:
+                if s["visibility"] == setting["visibility"]:
+                    ax.axhline(max(s["median_error_deg"], 0.5), color=colour, linestyle=style,
+                               linewidth=1, alpha=0.7)
     degree_axis(ax, views)
     title = (f"Median MAP error, planner '{planner['planner']}' "
              f"({summary['sequences']} sequences, {planner['ms_per_view']:.0f} ms/view)")
-    if baseline:
-        ax.plot([], [], color="grey", linestyle="--",
+    for baseline, style in baselines:
+        ax.plot([], [], color="grey", linestyle=style,
                 label=f"{baseline['name']}, single view ({baseline['ms_per_view']:.0f} ms/view)")
     ax.set_title(title, fontsize=10)
     ax.legend(fontsize=8, loc="best", framealpha=0.8)
@@ -175,7 +180,7 @@ def main(summary_path, out_dir):
     written = []
     for planner in summary["planners"]:
         path = out_dir / f"evaluation_{planner['planner']}.png"
-        plot_planner(summary, planner, summary.get("baseline"), path)
+        plot_planner(summary, planner, path)
         written.append(path)
     if len(summary["planners"]) > 1:
         path = out_dir / "evaluation_planners.png"

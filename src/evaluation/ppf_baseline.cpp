@@ -11,6 +11,7 @@
 #include <string>
 
 #include "view_direction_classification/common/error.h"
+#include "view_direction_classification/evaluation/ppf_angle_step.h"
 #include "view_direction_classification/geometry/surface_sampling.h"
 
 namespace vdc {
@@ -53,40 +54,17 @@ void checkParameters(const PpfParameters& p) {
   }
 }
 
-// Finite points with PCA normals (radius search on the full cloud, flipped towards the camera at
-// the origin), then one point per scene_spacing cell: the points keep their own normals, no
-// averaging across the mug's thin wall.
-pcl::PointCloud<pcl::PointNormal>::Ptr sceneWithNormals(
-    const pcl::PointCloud<pcl::PointXYZ>& camera_cloud, const PpfParameters& parameters) {
-  pcl::PointCloud<pcl::PointXYZ>::Ptr points(new pcl::PointCloud<pcl::PointXYZ>);
-  for (const auto& p : camera_cloud.points) {
-    if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) points->push_back(p);
-  }
-  pcl::PointCloud<pcl::PointNormal>::Ptr scene(new pcl::PointCloud<pcl::PointNormal>);
-  if (static_cast<int>(points->size()) < parameters.min_scene_points) return scene;
-
-  pcl::NormalEstimation<pcl::PointXYZ, pcl::Normal> estimation;
-  estimation.setInputCloud(points);
-  estimation.setSearchMethod(
-      pcl::search::KdTree<pcl::PointXYZ>::Ptr(new pcl::search::KdTree<pcl::PointXYZ>));
-  estimation.setRadiusSearch(parameters.normal_radius);
-  pcl::PointCloud<pcl::Normal> normals;
-  estimation.compute(normals);
-
-  pcl::PointCloud<pcl::PointNormal>::Ptr with_normals(new pcl::PointCloud<pcl::PointNormal>);
-  for (std::size_t i = 0; i < points->size(); ++i) {
-    if (!normals[i].getNormalVector3fMap().allFinite()) continue;
-    pcl::PointNormal point;
-    point.getVector3fMap() = (*points)[i].getVector3fMap();
-    point.getNormalVector3fMap() = normals[i].getNormalVector3fMap();
-    with_normals->push_back(point);
-  }
-  if (with_normals->empty()) return scene;
+// One point per scene_spacing cell: the points keep their own normals, no averaging across the
+// mug's thin wall.
+pcl::PointCloud<pcl::PointNormal>::Ptr sampledScene(
+    const pcl::PointCloud<pcl::PointNormal>::ConstPtr& scene, const PpfParameters& parameters) {
+  pcl::PointCloud<pcl::PointNormal>::Ptr sampled(new pcl::PointCloud<pcl::PointNormal>);
+  if (!scene || scene->empty()) return sampled;
   pcl::UniformSampling<pcl::PointNormal> sampling;
-  sampling.setInputCloud(with_normals);
+  sampling.setInputCloud(scene);
   sampling.setRadiusSearch(parameters.scene_spacing);
-  sampling.filter(*scene);
-  return scene;
+  sampling.filter(*sampled);
+  return sampled;
 }
 
 }  // namespace
@@ -114,9 +92,10 @@ PpfBaseline::PpfBaseline(const TriangleMesh& mesh, const PpfParameters& paramete
   estimation.setInputCloud(detector_->model);
   estimation.setInputNormals(detector_->model);
   estimation.compute(*features);
+  // A step that keeps PCL's votes inside its accumulator (ppf_angle_step.h).
+  angle_step_rad_ = safePpfAngleStep(parameters_.angle_step_deg * kDegrees);
   detector_->hash_map.reset(
-      new pcl::PPFHashMapSearch(static_cast<float>(parameters_.angle_step_deg * kDegrees),
-                                static_cast<float>(parameters_.distance_step)));
+      new pcl::PPFHashMapSearch(angle_step_rad_, static_cast<float>(parameters_.distance_step)));
   detector_->hash_map->setInputFeatureCloud(features);
 }
 
@@ -124,10 +103,46 @@ PpfBaseline::~PpfBaseline() = default;
 PpfBaseline::PpfBaseline(PpfBaseline&&) noexcept = default;
 PpfBaseline& PpfBaseline::operator=(PpfBaseline&&) noexcept = default;
 
+pcl::PointCloud<pcl::PointNormal>::Ptr PpfBaseline::sceneWithNormals(
+    const pcl::PointCloud<pcl::PointXYZ>& camera_cloud) const {
+  pcl::PointCloud<pcl::PointXYZ>::Ptr points(new pcl::PointCloud<pcl::PointXYZ>);
+  for (const auto& p : camera_cloud.points) {
+    if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) points->push_back(p);
+  }
+  pcl::PointCloud<pcl::PointNormal>::Ptr with_normals(new pcl::PointCloud<pcl::PointNormal>);
+  if (static_cast<int>(points->size()) < parameters_.min_scene_points) return with_normals;
+
+  pcl::NormalEstimation<pcl::PointXYZ, pcl::Normal> estimation;
+  estimation.setInputCloud(points);
+  estimation.setSearchMethod(
+      pcl::search::KdTree<pcl::PointXYZ>::Ptr(new pcl::search::KdTree<pcl::PointXYZ>));
+  estimation.setRadiusSearch(parameters_.normal_radius);
+  pcl::PointCloud<pcl::Normal> normals;
+  estimation.compute(normals);
+  for (std::size_t i = 0; i < points->size(); ++i) {
+    if (!normals[i].getNormalVector3fMap().allFinite()) continue;
+    pcl::PointNormal point;
+    point.getVector3fMap() = (*points)[i].getVector3fMap();
+    point.getNormalVector3fMap() = normals[i].getNormalVector3fMap();
+    with_normals->push_back(point);
+  }
+  return with_normals;
+}
+
+double PpfBaseline::angleStepDeg() const { return angle_step_rad_ / kDegrees; }
+
 PpfMatch PpfBaseline::match(const pcl::PointCloud<pcl::PointXYZ>& camera_cloud) {
   const auto start = std::chrono::steady_clock::now();
+  PpfMatch result = matchScene(sceneWithNormals(camera_cloud));
+  result.milliseconds =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+PpfMatch PpfBaseline::matchScene(const pcl::PointCloud<pcl::PointNormal>::ConstPtr& full_scene) {
+  const auto start = std::chrono::steady_clock::now();
   PpfMatch result;
-  const auto scene = sceneWithNormals(camera_cloud, parameters_);
+  const auto scene = sampledScene(full_scene, parameters_);
   if (static_cast<int>(scene->size()) >= parameters_.min_scene_points) {
     pcl::PPFRegistration<pcl::PointNormal, pcl::PointNormal> registration;
     registration.setSceneReferencePointSamplingRate(

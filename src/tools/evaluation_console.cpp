@@ -110,6 +110,7 @@ void printEvaluationReport(const EvaluationReport& report) {
     for (const auto& setting : result.settings) printSettingMedians(setting, report.settings.views);
   }
   if (report.baseline) printBaseline(*report.baseline);
+  if (report.baseline_icp) printBaseline(*report.baseline_icp);
   for (const auto& stream : report.streams) printStream(stream);
 }
 

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
 #include <optional>
 #include <string>
 
@@ -131,6 +132,14 @@ void writeErrorsCsv(std::ostream& out, const std::vector<EvaluationResult>& resu
   writeHeader(out);
   for (const auto& result : results) writeResultRows(out, result);
   for (const auto& stream : streams) writeStreamRows(out, stream);
+}
+
+void writeErrorsCsv(std::ostream& out, const EvaluationReport& report) {
+  std::vector<EvaluationResult> rows = report.results;
+  for (const auto* baseline : {&report.baseline, &report.baseline_icp}) {
+    if (*baseline) rows.push_back((*baseline)->result);
+  }
+  writeErrorsCsv(out, rows, report.streams);
 }
 
 }  // namespace vdc::tools

@@ -3,6 +3,7 @@
 #include <ostream>
 #include <vector>
 
+#include "evaluation_report.h"
 #include "view_direction_classification/evaluation/evaluation.h"
 #include "view_direction_classification/evaluation/stream_evaluation.h"
 
@@ -18,5 +19,8 @@ namespace vdc::tools {
 // declared once, in evaluation_csv.cpp.
 void writeErrorsCsv(std::ostream& out, const std::vector<EvaluationResult>& results,
                     const std::vector<StreamEvaluationResult>& streams = {});
+// A run's errors.csv: the planners' rows, the baselines' (PPF, then PPF followed by ICP), the
+// streams'.
+void writeErrorsCsv(std::ostream& out, const EvaluationReport& report);
 
 }  // namespace vdc::tools

@@ -238,8 +238,10 @@ void addEvaluateOptions(CLI::App& command, EvaluateOptions& options) {
   options.recorded.push_back(
       {nlohmann::json::json_pointer("/estimator/refinement"),
        [](const EvaluationSettings& s) { return refinementModeName(s.estimator.refinement); }});
-  command.add_flag("--baseline", options.baseline,
-                   "also run the single-view PPF baseline (PCL) on the random planner's views");
+  command.add_flag(
+      "--baseline", options.baseline,
+      "also run the single-view baselines on the random planner's views: PCL's PPF, and "
+      "PPF followed by point-to-plane ICP");
   command.add_flag("--no-noise", options.no_noise, "render the views without sensor noise");
   options.recorded.push_back({nlohmann::json::json_pointer("/noise"),
                               [](const EvaluationSettings& s) { return s.noise; }});

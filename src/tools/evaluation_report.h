@@ -11,19 +11,22 @@
 
 namespace vdc::tools {
 
-// The single-view baseline's results and the time its model took to build.
+// A single-view baseline's results, the time its model took to build and its settings as used
+// (summary.json).
 struct BaselineResult {
   EvaluationResult result;
   double training_seconds = 0;
+  nlohmann::json parameters = nlohmann::json::object();
 };
 
 // Everything one `vdc evaluate` run reports, in summary.json and on the terminal.
 struct EvaluationReport {
   std::string model_path, mesh_path;
-  EvaluationSettings settings;            // as used
-  nlohmann::json recorded_settings;       // recordedSettings of the options
-  std::vector<EvaluationResult> results;  // one per planner
-  std::optional<BaselineResult> baseline;
+  EvaluationSettings settings;                  // as used
+  nlohmann::json recorded_settings;             // recordedSettings of the options
+  std::vector<EvaluationResult> results;        // one per planner
+  std::optional<BaselineResult> baseline;       // --baseline: PCL's PPF
+  std::optional<BaselineResult> baseline_icp;   // --baseline: PPF followed by ICP
   std::vector<StreamEvaluationResult> streams;  // --stream-rate: the random views as a stream
   double seconds_total = 0;
 };

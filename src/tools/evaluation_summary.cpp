@@ -143,6 +143,7 @@ nlohmann::json baselineSummary(const BaselineResult& baseline) {
   return {{"name", baseline.result.planner},
           {"ms_per_view", baseline.result.mean_update_ms},
           {"training_seconds", baseline.training_seconds},
+          {"parameters", baseline.parameters},
           {"settings", settings}};
 }
 
@@ -168,6 +169,8 @@ nlohmann::json evaluationSummary(const EvaluationReport& report) {
   summary["planners"] = planners;
   summary["baseline"] =
       report.baseline ? baselineSummary(*report.baseline) : nlohmann::json(nullptr);
+  summary["baseline_icp"] =
+      report.baseline_icp ? baselineSummary(*report.baseline_icp) : nlohmann::json(nullptr);
   nlohmann::json streams = nlohmann::json::array();
   for (const auto& stream : report.streams) {
     streams.push_back(streamSummary(stream, report.settings));

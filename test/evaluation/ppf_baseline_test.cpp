@@ -8,9 +8,10 @@
 #include <limits>
 #include <memory>
 
+#include "view_direction_classification/common/error.h"
+#include "view_direction_classification/evaluation/ppf_angle_step.h"
 #include "view_direction_classification/geometry/camera.h"
 #include "view_direction_classification/geometry/depth_renderer.h"
-#include "view_direction_classification/common/error.h"
 #include "view_direction_classification/geometry/mug_mesh.h"
 
 namespace vdc {
@@ -46,12 +47,17 @@ class PpfBaselineTest : public ::testing::Test {
 TriangleMesh* PpfBaselineTest::mesh_ = nullptr;
 PpfBaseline* PpfBaselineTest::baseline_ = nullptr;
 
-TEST_F(PpfBaselineTest, LocatesTheMugAndItsAxisInNoiseFreeViews) {
-  // Oblique views from above and below, handle visible. Measured: position within 5 mm, body axis
-  // within 2 degrees, but the rotation about the axis off by 60-160 degrees (the rotationally
-  // symmetric body outvotes the handle). So the full orientation error is not bounded here; the
-  // bounds below leave a margin of 3x and 5x.
-  const Eigen::Vector3d directions[] = {{1.0, 0.4, 0.8}, {0.2, -1.0, 0.3}, {-0.5, 0.6, -0.7}};
+TEST_F(PpfBaselineTest, LocatesTheMugAndMostlyItsAxisInNoiseFreeViews) {
+  // Oblique views from above and below, handle visible. Measured with the 12.41 degree step:
+  // position within 8 mm in every view; the body axis within 3 degrees in 4 of the 6 views and
+  // upside down (178-179 degrees) in the first and the fourth, both from above (with the unsafe
+  // 12 degree step the first three views all had the axis within 2 degrees: which views flip
+  // depends on the quantisation); the rotation about the axis off by 7-120 degrees where the
+  // axis is right (the rotationally symmetric body outvotes the handle). So the full orientation
+  // error is not bounded here, the axis in at least half of the views, the position in all.
+  const Eigen::Vector3d directions[] = {{1.0, 0.4, 0.8},  {0.2, -1.0, 0.3},  {-0.5, 0.6, -0.7},
+                                        {0.7, -0.2, 0.9}, {-1.0, -0.3, 0.2}, {0.3, 0.8, -0.6}};
+  int axes_found = 0;
   for (const auto& direction : directions) {
     const Eigen::Isometry3d truth = cameraFromObject(direction, 0.6, 0.3);
     const PpfMatch match = baseline_->match(render(truth));
@@ -67,8 +73,9 @@ TEST_F(PpfBaselineTest, LocatesTheMugAndItsAxisInNoiseFreeViews) {
         orientationErrorDeg(match.camera_from_object, truth), axis_error, 1e3 * position_error,
         match.milliseconds);
     EXPECT_LT(position_error, 0.015);
-    EXPECT_LT(axis_error, 10.0);
+    if (axis_error < 10.0) ++axes_found;
   }
+  EXPECT_GE(axes_found, 3);
 }
 
 TEST_F(PpfBaselineTest, ReturnsAFiniteRigidPoseAndIsDeterministic) {
@@ -85,6 +92,13 @@ TEST_F(PpfBaselineTest, ReturnsAFiniteRigidPoseAndIsDeterministic) {
   EXPECT_TRUE(first.camera_from_object.matrix().isApprox(second.camera_from_object.matrix(), 0));
 }
 
+TEST_F(PpfBaselineTest, UsesTheSafeAngleStepNearestTheRequestedOne) {
+  // The default 12 degrees would overflow PCL's vote accumulator (ppf_angle_step.h).
+  EXPECT_EQ(baseline_->parameters().angle_step_deg, 12.0);
+  EXPECT_NEAR(baseline_->angleStepDeg(), 360.0 / 29.0, 1e-5);
+  EXPECT_TRUE(isSafePpfAngleStep(static_cast<float>(baseline_->angleStepDeg() * M_PI / 180.0)));
+}
+
 TEST_F(PpfBaselineTest, EmptyAllNanAndTinyCloudsGiveNoPose) {
   pcl::PointCloud<pcl::PointXYZ> empty;
   EXPECT_FALSE(baseline_->match(empty).found);
@@ -94,6 +108,7 @@ TEST_F(PpfBaselineTest, EmptyAllNanAndTinyCloudsGiveNoPose) {
   pcl::PointCloud<pcl::PointXYZ> three;
   for (int i = 0; i < 3; ++i) three.push_back(pcl::PointXYZ(0.01f * i, 0.0f, 0.6f));
   EXPECT_FALSE(baseline_->match(three).found);
+  EXPECT_FALSE(baseline_->matchScene(nullptr).found);
 }
 
 TEST(PpfBaselineParametersTest, InvalidParametersAndEmptyMeshesAreRefused) {

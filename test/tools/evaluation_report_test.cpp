@@ -9,6 +9,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "evaluation_csv.h"
@@ -142,6 +143,66 @@ TEST(EvaluationReportTest, SummaryGivesMedianPositionErrorsPerViewIgnoringViewsW
   EXPECT_EQ(planned["median_position_error_mm_after_views"],
             nlohmann::json::parse(R"({"1": null, "2": 4.0})"));
   EXPECT_EQ(summary["baseline"]["settings"][0]["median_position_error_mm"], 4.0);
+}
+
+// A report with one planner, the PPF baseline and PPF followed by ICP, each with its own errors.
+EvaluationReport reportWithBothBaselines() {
+  EvaluationReport report;
+  report.settings.views = 2;
+  const std::pair<const char*, double> methods[] = {
+      {"random", 10.0}, {"ppf_baseline", 90.0}, {"ppf_icp_baseline", 45.0}};
+  std::vector<EvaluationResult> results;
+  for (const auto& [name, error] : methods) {
+    SettingErrors setting;
+    setting.errors_deg = Eigen::MatrixXd::Constant(3, 2, error);
+    setting.position_errors_mm = Eigen::MatrixXd::Constant(3, 2, error / 10.0);
+    results.push_back({});
+    results.back().planner = name;
+    results.back().settings.push_back(setting);
+  }
+  report.results.push_back(results[0]);
+  report.baseline = BaselineResult{results[1], 2.5, {{"angle_step_deg", 12.41}}};
+  report.baseline_icp = BaselineResult{results[2], 2.6, {{"icp_max_iterations", 50}}};
+  return report;
+}
+
+TEST(EvaluationReportTest, ErrorsCsvCarriesBothBaselinesAfterThePlanners) {
+  std::ostringstream csv;
+  writeErrorsCsv(csv, reportWithBothBaselines());
+  std::istringstream lines(csv.str());
+  std::string line;
+  ASSERT_TRUE(std::getline(lines, line));  // the header
+  std::vector<std::string> order;
+  while (std::getline(lines, line)) {
+    std::vector<std::string> fields;
+    std::istringstream row(line);
+    for (std::string field; std::getline(row, field, ',');) fields.push_back(field);
+    ASSERT_EQ(fields.size(), 11u) << line;
+    if (order.empty() || order.back() != fields[0]) order.push_back(fields[0]);
+    // Each method's rows carry its own errors: map_error_deg and position_error_mm.
+    const double expected = fields[0] == "random"         ? 10.0
+                            : fields[0] == "ppf_baseline" ? 90.0
+                                                          : 45.0;
+    EXPECT_DOUBLE_EQ(std::stod(fields[4]), expected) << line;
+    EXPECT_DOUBLE_EQ(std::stod(fields[10]), expected / 10.0) << line;
+  }
+  EXPECT_EQ(order, (std::vector<std::string>{"random", "ppf_baseline", "ppf_icp_baseline"}));
+}
+
+TEST(EvaluationReportTest, SummaryGivesBothBaselinesWithTheirSettings) {
+  const nlohmann::json summary = evaluationSummary(reportWithBothBaselines());
+  EXPECT_EQ(summary["baseline"]["name"], "ppf_baseline");
+  EXPECT_EQ(summary["baseline"]["settings"][0]["median_error_deg"], 90.0);
+  EXPECT_EQ(summary["baseline"]["parameters"]["angle_step_deg"], 12.41);
+  EXPECT_EQ(summary["baseline_icp"]["name"], "ppf_icp_baseline");
+  EXPECT_EQ(summary["baseline_icp"]["settings"][0]["median_error_deg"], 45.0);
+  EXPECT_EQ(summary["baseline_icp"]["settings"][0]["median_position_error_mm"], 4.5);
+  EXPECT_EQ(summary["baseline_icp"]["training_seconds"], 2.6);
+  EXPECT_EQ(summary["baseline_icp"]["parameters"]["icp_max_iterations"], 50);
+  // Without --baseline both are null.
+  const nlohmann::json without = evaluationSummary(EvaluationReport{});
+  EXPECT_TRUE(without["baseline"].is_null());
+  EXPECT_TRUE(without["baseline_icp"].is_null());
 }
 
 TEST(EvaluationReportTest, VisibilityLabelsRoundTripAndBadOnesAreRefused) {

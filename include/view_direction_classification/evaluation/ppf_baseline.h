@@ -20,7 +20,10 @@ struct PpfParameters {
   // matching ~0.2 s a view); 7 mm (1185 points) took 160 s to train and 18 s a view.
   double model_spacing = 0.01;   // [m]
   std::uint32_t model_seed = 1;  // of the surface sampling
-  double angle_step_deg = 12.0;  // quantisation of the point-pair angles (Drost: 2 pi / 30)
+  // Quantisation of the point-pair angles, requested (Drost: 2 pi / 30). The baseline uses the
+  // nearest step PCL's voting cannot overflow (safePpfAngleStep, ppf_angle_step.h): 12.41 degrees
+  // (2 pi / 29) for the default; angleStepDeg() gives it.
+  double angle_step_deg = 12.0;
   double distance_step = 0.005;  // quantisation of the point-pair distance [m]
   // Scene: PCA normals over normal_radius on the full cloud (the estimator's radius, flipped
   // towards the camera), then one point per scene_spacing cell; every
@@ -64,13 +67,25 @@ class PpfBaseline {
   // (the registration keeps matching state): use one instance per thread.
   PpfMatch match(const pcl::PointCloud<pcl::PointXYZ>& camera_cloud);
 
+  // The cloud's finite points with PCA normals (radius search over normal_radius, flipped towards
+  // the camera at the origin), at full resolution: what match() samples and what ICP after PPF
+  // aligns to (baseline_icp.h).
+  pcl::PointCloud<pcl::PointNormal>::Ptr sceneWithNormals(
+      const pcl::PointCloud<pcl::PointXYZ>& camera_cloud) const;
+  // match() on a scene sceneWithNormals made (sampled to scene_spacing here; null or too small:
+  // found = false). milliseconds counts the matching alone.
+  PpfMatch matchScene(const pcl::PointCloud<pcl::PointNormal>::ConstPtr& scene);
+
   const PpfParameters& parameters() const { return parameters_; }
+  // The angle step in use [deg]: the safe one nearest to parameters().angle_step_deg.
+  double angleStepDeg() const;
   std::size_t modelPoints() const { return model_points_; }
 
  private:
   struct Detector;
   PpfParameters parameters_;
   std::size_t model_points_ = 0;
+  float angle_step_rad_ = 0;
   std::unique_ptr<Detector> detector_;
 };
 
