@@ -3,13 +3,26 @@
 
 catkin_test_results counts every gtest 1.12 case twice and ctest counts executables; this
 reads the <testcase> elements themselves. A result file that catkin wrote for a crashed or
-missing test binary ("MISSING-RESULT") counts as a failure. Prints the failed cases, then
-"N passed, N failed[, N skipped]" as the last line; exit status 1 if anything failed or no
-test ran.
+missing test binary ("MISSING-RESULT") counts as a failure. Prints the failed cases, each with
+the first lines of its failure message (CI logs keep only their tail, so the reason must be
+here), then "N passed, N failed[, N skipped]" as the last line; exit status 1 if anything failed
+or no test ran.
 """
 import pathlib
 import sys
 import xml.etree.ElementTree as ET
+
+MESSAGE_LINES = 6
+
+
+def failure_message(case):
+    """The first MESSAGE_LINES lines of a failed case's message, indented."""
+    verdict = case.find("failure")
+    if verdict is None:
+        verdict = case.find("error")
+    text = (verdict.get("message") or "") + "\n" + (verdict.text or "")
+    lines = [line.rstrip() for line in text.splitlines() if line.strip()]
+    return "".join(f"\n    {line}" for line in lines[:MESSAGE_LINES])
 
 
 def main(results_dir):
@@ -29,7 +42,7 @@ def main(results_dir):
                 continue
             seen.add(key)
             if case.find("failure") is not None or case.find("error") is not None:
-                failed.append(f"{path.name}: {key[0]}.{key[1]}")
+                failed.append(f"{path.name}: {key[0]}.{key[1]}{failure_message(case)}")
             elif (case.find("skipped") is not None or case.get("status") == "notrun"
                   or case.get("result") == "skipped"):
                 skipped += 1

@@ -65,7 +65,13 @@ ParameterTable<EstimatorRosParameters> makeTable() {
                                  [](double value) { return value > 0.0 && value <= 180.0; }})
       .add("refinement_max_refined", refinement(&R::max_refined),
            integerAtLeast(0, "0: every start"))
-      .add("refinement_min_score", refinement(&R::min_score), numberIn(-1.0, 1.0, true));
+      .add("refinement_min_score", refinement(&R::min_score), numberIn(-1.0, 1.0, true))
+      .add("refinement_restart_seeds", refinement(&R::restart_seeds),
+           integerAtLeast(0, "0: no restarts"))
+      .add("refinement_depth_noise_at_1m",
+           fieldPath(&P::core, &E::refinement_parameters, &R::verification,
+                     &VerificationParameters::depth_noise_at_1m),
+           numberAtLeast(0.0, "0: the fixed tolerances alone"));
   // Segmentation (its region of interest is in the fixed frame).
   using S = SegmentationParameters;
   const auto segmentation = [](auto member) {
