@@ -63,6 +63,8 @@ class Hdf5File {
  private:
   Hdf5File(hid_t id, std::string label) : id_(id), label_(std::move(label)) {}
   [[noreturn]] void fail(const std::string& problem) const;
+  // Throws unless the object's header is intact and checksummed (see hdf5_file.cpp).
+  void checkObjectHeader(const std::string& name) const;
   hid_t openAttribute(const std::string& object, const std::string& name) const;
   template <typename Scalar>
   void write(const std::string& name, const Scalar* row_major, int rank, const hsize_t* dims);

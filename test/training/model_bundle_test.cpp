@@ -199,12 +199,69 @@ TEST_F(ModelBundleFiles, RefusesTextFile) {
   EXPECT_EQ(loadError(path("notes.h5")), path("notes.h5") + ": truncated or not an HDF5 file");
 }
 
-TEST_F(ModelBundleFiles, RefusesForeignHdf5File) {
-  const std::string path = this->path("foreign.h5");
-  const hid_t id = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+// An HDF5 file in the given library version bounds' format, holding one dataset.
+void writeForeignHdf5File(const std::string& path, H5F_libver_t format) {
+  const hid_t access = H5Pcreate(H5P_FILE_ACCESS);
+  H5Pset_libver_bounds(access, format, H5F_LIBVER_LATEST);
+  const hid_t id = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access);
   replaceDataset(id, "temperature", 3, 2);
   H5Fclose(id);
+  H5Pclose(access);
+}
+
+std::string fileBytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+// Replaces the first occurrence of `pattern` in the file by `replacement` (same length).
+void overwriteBytes(const std::string& path, const std::string& pattern,
+                    const std::string& replacement) {
+  std::string bytes = fileBytes(path);
+  const std::size_t at = bytes.find(pattern);
+  ASSERT_NE(at, std::string::npos) << "pattern not in " << path;
+  bytes.replace(at, replacement.size(), replacement);
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+}
+
+TEST_F(ModelBundleFiles, RefusesForeignHdf5File) {
+  const std::string path = this->path("foreign.h5");
+  writeForeignHdf5File(path, H5F_LIBVER_V110);
   EXPECT_EQ(loadError(path), path + ": not a view_direction_classification model bundle");
+}
+
+// HDF5 1.10.8 reads past a buffer while decoding some damaged headers that carry no checksum
+// (found by fuzz/model_bundle_fuzzer.cpp), so such files are refused before HDF5 decodes them.
+TEST_F(ModelBundleFiles, RefusesAnHdf5FileWithoutMetadataChecksumsNamingTheConversion) {
+  const std::string path = this->path("old_format.h5");
+  writeForeignHdf5File(path, H5F_LIBVER_EARLIEST);
+  const std::string message = loadError(path);
+  EXPECT_EQ(
+      message.rfind(path + ": an HDF5 file without metadata checksums (superblock version 0)", 0),
+      0u)
+      << message;
+  EXPECT_NE(message.find("h5repack --low=2 --high=2 -f FLET"), std::string::npos) << message;
+}
+
+TEST_F(ModelBundleFiles, RefusesADamagedObjectHeaderByItsChecksum) {
+  saveModelBundle(makeBundle(), path("model.h5"));
+  overwriteBytes(path("model.h5"), "format_version", "format_versioN");
+  EXPECT_EQ(loadError(path("model.h5")),
+            path("model.h5") + ": the header of / is damaged (its checksum does not match)");
+}
+
+// Without the datasets' checksum a changed byte would load as a plausible, wrong value.
+TEST_F(ModelBundleFiles, RefusesAChangedValueInADatasetByItsChecksum) {
+  saveModelBundle(makeBundle(), path("model.h5"));
+  const double bound = 0.071;  // makeBundle's bounds.max().x(), stored once, little-endian
+  const std::string stored(reinterpret_cast<const char*>(&bound), sizeof bound);
+  std::string changed = stored;
+  changed[0] = static_cast<char>(changed[0] ^ 0x01);  // the least significant mantissa bit
+  overwriteBytes(path("model.h5"), stored, changed);
+  EXPECT_EQ(loadError(path("model.h5")),
+            path("model.h5") +
+                ": cannot read dataset surface/bounds (the file is truncated or "
+                "damaged)");
 }
 
 TEST_F(ModelBundleFiles, RefusesNewerFormatVersion) {
