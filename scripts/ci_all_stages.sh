@@ -9,8 +9,10 @@
 #   3. sanitizers       the gtest binaries of `make test-sanitize`, cheapest first, each built and
 #                       run while the budget lasts; the ones the budget does not reach are listed
 #                       as not run (`make test-sanitize` runs them all, doc/hardening.md).
-# Each stage prints "...: N passed, N failed"; the closing line adds them up. A sanitizer report,
-# a fuzz crash or a failed test fails the run; what the budget left out does not, and is named.
+# Each stage prints "...: N passed, N failed"; the closing line adds them up, after a digest of
+# every failure (failed cases, sanitizer summaries) repeated from the stages' logs. A sanitizer
+# report, a fuzz crash or a failed test fails the run; what the budget left out does not, and is
+# named.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 budget_s=$(( ${CI_BUDGET_MINUTES:-38} * 60 ))
@@ -34,7 +36,13 @@ count_stage() {
     failed=${failed%% failed*}
   fi
   if [[ $stage_status -ne 0 && $failed -eq 0 ]]; then failed=1; fi
-  [[ $stage_status -ne 0 ]] && status=1
+  if [[ $stage_status -ne 0 ]]; then
+    status=1
+    # What failed and why, repeated at the end: CI logs keep only their head and tail.
+    { echo "ci: $name failed:"
+      grep -E '^FAILED |^    |FAILED \(exit|^SUMMARY: |^==[0-9]+==ERROR|runtime error|error:' "$log" \
+        | head -30; } >> "$logs/failures.log"
+  fi
   total_passed=$((total_passed + passed))
   total_failed=$((total_failed + failed))
   echo "ci: $name: exit $stage_status, $passed passed, $failed failed, $((SECONDS - start)) s"
@@ -127,6 +135,7 @@ if [[ ${#not_run[@]} -gt 0 ]]; then
   echo "ci: not run within the ${CI_BUDGET_MINUTES:-38}-minute budget (make test-sanitize, make fuzz run them):"
   printf 'ci:   %s\n' "${not_run[@]}"
 fi
+[[ -s "$logs/failures.log" ]] && cat "$logs/failures.log"
 echo "ci: $SECONDS s in all"
 echo "$total_passed passed, $total_failed failed"
 exit $status
