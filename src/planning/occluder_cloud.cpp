@@ -49,7 +49,17 @@ Eigen::Matrix3d viewingFrame(const Eigen::Vector3d& camera) {
   return frameAround(axis).transpose();
 }
 
-// The query points' image coordinates (x/z, y/z); points behind the camera are never hidden.
+// Image coordinates (x/z, y/z) beyond this, 89.99994 degrees off the viewing axis, lie outside
+// any camera's field of view. Such points are left out: as floats their images lose all precision
+// or overflow, and FLANN's kd-tree, splitting at (min + max) / 2, aborts on an infinite span.
+constexpr double kMaxImageCoordinate = 1e6;
+
+bool imageInRange(const Eigen::Vector2d& image) {
+  return image.cwiseAbs().maxCoeff() <= kMaxImageCoordinate;  // false for NaN too
+}
+
+// The query points' image coordinates (x/z, y/z); points behind the camera or out of range
+// (above) are never hidden.
 struct ProjectedSurface {
   std::vector<Eigen::Vector2d> image;
   std::vector<bool> in_front;
@@ -65,8 +75,9 @@ ProjectedSurface projectSurface(const Eigen::Matrix3d& frame, const Eigen::Vecto
   for (std::size_t i = 0; i < surface_points.size(); ++i) {
     const Eigen::Vector3d u = frame * (surface_points[i] - camera);
     if (u.z() <= 0.0) continue;
-    surface.in_front[i] = true;
     surface.image[i] = u.head<2>() / u.z();
+    if (!imageInRange(surface.image[i])) continue;
+    surface.in_front[i] = true;
     surface.max_image_radius = std::max(surface.max_image_radius, surface.image[i].norm());
     surface.max_depth = std::max(surface.max_depth, u.z());
   }
@@ -74,8 +85,8 @@ ProjectedSurface projectSurface(const Eigen::Matrix3d& frame, const Eigen::Vecto
 }
 
 // Occluder points at least 2 radii in front of the camera (points nearer the camera plane are
-// left out: an occluder touching the lens) and not beyond every query point (those cannot touch
-// a line of sight), projected the same way.
+// left out: an occluder touching the lens), not beyond every query point (those cannot touch a
+// line of sight) and with their image in range, projected the same way.
 struct ProjectedOccluders {
   pcl::PointCloud<pcl::PointXYZ>::Ptr image{new pcl::PointCloud<pcl::PointXYZ>};
   std::vector<int> index;  // of each image point in the occluder cloud
@@ -92,6 +103,7 @@ ProjectedOccluders projectOccluders(const Eigen::Matrix3d& frame, const Eigen::V
     const Eigen::Vector3d u = frame * (points[i] - camera);
     if (u.z() <= 2.0 * radius || u.z() > max_surface_depth + radius) continue;
     const Eigen::Vector2d q = u.head<2>() / u.z();
+    if (!imageInRange(q)) continue;
     occluders.image->push_back(
         pcl::PointXYZ(static_cast<float>(q.x()), static_cast<float>(q.y()), 0.f));
     occluders.index.push_back(static_cast<int>(i));
