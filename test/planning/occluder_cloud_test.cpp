@@ -55,20 +55,18 @@ TEST(OccluderCloud, AgreesWithTheBruteForceSegmentDistanceTest) {
 }
 
 // Found by the server_requests fuzzer: occluder points far off the viewing axis have image
-// coordinates beyond a float's range (or so large that FLANN's split arithmetic overflows), and
-// FLANN's kd-tree aborted the server on an assertion. They lie outside any camera's field of view
-// and cannot hide the object; the points near it still do.
+// coordinates near a float's maximum, where FLANN's kd-tree split, (min + max) / 2, overflows to
+// infinity, and FLANN aborted the server on an assertion (Debian's PCL keeps FLANN's asserts).
+// Such points lie outside any camera's field of view and cannot hide the object; the points near
+// it still do.
 TEST(OccluderCloud, PointsFarOffTheViewingAxisNeitherAbortNorHide) {
   const std::vector<Eigen::Vector3d> surface = {{0.05, 0, 0}, {0.05, 0.02, 0}};
   const Eigen::Vector3d camera(0.6, 0, 0);
-  // Enough points for the kd-tree to split (its leaves hold 15): one hides the first surface
-  // point, 19 stand aside, 20 lie out to +-3e38 m (images beyond a float) or +-1e37 m.
+  // One point hides the first surface point, 19 stand aside, and 20 lie 6-8e37 m out at 0.3 m
+  // depth: images of 2-2.7e38, more than the kd-tree's leaf of 15, so it splits among them.
   std::vector<Eigen::Vector3d> points = {{0.3, 0.004, 0}};
   for (int i = 0; i < 19; ++i) points.emplace_back(0.3, -0.05 - 0.001 * i, 0);
-  for (int i = 0; i < 20; ++i) {
-    const double far = (i % 2 == 0 ? 3e38 : -1e37) * (i % 3 == 0 ? 1.0 : -1.0);
-    points.emplace_back(0.3, far, i % 4 == 0 ? far : 0.0);
-  }
+  for (int i = 0; i < 20; ++i) points.emplace_back(0.3, -6e37 - 1e36 * i, 0);
   const std::vector<bool> hidden = OccluderCloud(points, 0.005).hidden(camera, surface);
   EXPECT_TRUE(hidden[0]);
   EXPECT_FALSE(hidden[1]);
