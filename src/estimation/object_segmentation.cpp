@@ -10,17 +10,14 @@
 #include <string>
 
 #include "view_direction_classification/common/error.h"
+#include "view_direction_classification/geometry/measured_point.h"
 
 namespace vdc {
 namespace {
 
-bool isFinitePoint(const pcl::PointXYZ& p) {
-  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-}
-
-// The finite points (within `radius` of `centre` when radius > 0) and their indices.
-ObjectSegment finitePointsWithin(const pcl::PointCloud<pcl::PointXYZ>& cloud,
-                                 const Eigen::Vector3d& centre, double radius) {
+// The measured points (within `radius` of `centre` when radius > 0) and their indices.
+ObjectSegment measuredPointsWithin(const pcl::PointCloud<pcl::PointXYZ>& cloud,
+                                   const Eigen::Vector3d& centre, double radius) {
   ObjectSegment kept;
   kept.points.header = cloud.header;
   kept.points.reserve(cloud.size());
@@ -28,7 +25,7 @@ ObjectSegment finitePointsWithin(const pcl::PointCloud<pcl::PointXYZ>& cloud,
   const float r2 = static_cast<float>(radius * radius);
   for (std::size_t i = 0; i < cloud.size(); ++i) {
     const pcl::PointXYZ& p = cloud[i];
-    if (!isFinitePoint(p)) continue;
+    if (!isMeasuredPoint(p)) continue;
     if (radius > 0.0 && (p.getVector3fMap() - c).squaredNorm() > r2) continue;
     kept.points.push_back(p);
     kept.indices.push_back(static_cast<int>(i));
@@ -164,14 +161,14 @@ ObjectSegment segmentObject(const pcl::PointCloud<pcl::PointXYZ>& cloud,
   ObjectSegment object;
   switch (parameters.mode) {
     case SegmentationMode::kNone:
-      object = finitePointsWithin(cloud, Eigen::Vector3d::Zero(), 0.0);
+      object = measuredPointsWithin(cloud, Eigen::Vector3d::Zero(), 0.0);
       break;
     case SegmentationMode::kRegionOfInterest:
       object = largestClusterInRegion(
-          finitePointsWithin(cloud, parameters.roi_centre, parameters.roi_radius), parameters);
+          measuredPointsWithin(cloud, parameters.roi_centre, parameters.roi_radius), parameters);
       break;
     case SegmentationMode::kTabletop:
-      object = tabletopObject(finitePointsWithin(cloud, Eigen::Vector3d::Zero(), 0.0), parameters,
+      object = tabletopObject(measuredPointsWithin(cloud, Eigen::Vector3d::Zero(), 0.0), parameters,
                               context);
       break;
   }

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "view_direction_classification/geometry/measured_point.h"
+
 namespace vdc {
 
 ObjectSighting lookForTrackedObject(const pcl::PointCloud<pcl::PointXYZ>& cloud,
@@ -21,7 +23,7 @@ ObjectSighting lookForTrackedObject(const pcl::PointCloud<pcl::PointXYZ>& cloud,
   ObjectSighting sighting;
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   for (const pcl::PointXYZ& point : cloud.points) {
-    if (!std::isfinite(point.x) || !std::isfinite(point.y) || !std::isfinite(point.z)) continue;
+    if (!isMeasuredPoint(point)) continue;
     const Eigen::Vector3d p = point.getVector3fMap().cast<double>();
     if (table && table->head<3>().dot(p) + (*table)(3) <= parameters.table_distance) {
       // The table itself; behind the tracked place it still shows that place empty.

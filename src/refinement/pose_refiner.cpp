@@ -20,6 +20,7 @@
 #include "view_direction_classification/common/error.h"
 #include "view_direction_classification/common/quaternion.h"
 #include "view_direction_classification/common/rotation_error.h"
+#include "view_direction_classification/geometry/measured_point.h"
 
 namespace vdc {
 
@@ -83,7 +84,8 @@ void checkParameters(const RefinementParameters& p) {
   }
 }
 
-// The finite points of every view (their camera frames) and the same in the fixed frame.
+// The measured points (geometry/measured_point.h) in front of every view's camera (their camera
+// frames) and the same in the fixed frame.
 struct Observation {
   std::vector<RefinementView> views;
   pcl::PointCloud<pcl::PointXYZ>::Ptr world{new pcl::PointCloud<pcl::PointXYZ>};
@@ -95,7 +97,7 @@ Observation finitePoints(const std::vector<RefinementView>& views) {
     pcl::PointCloud<pcl::PointXYZ>::Ptr finite(new pcl::PointCloud<pcl::PointXYZ>);
     if (view.points) {
       for (const auto& p : view.points->points) {
-        if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && p.z > 0.0f) {
+        if (isMeasuredPoint(p) && p.z > 0.0f) {
           finite->push_back(p);
         }
       }

@@ -68,6 +68,29 @@ TEST_F(OrientationEstimatorTest, SkipsEmptyAndAllNanCloudsWithoutTouchingTheBeli
   EXPECT_FALSE(estimator.positionEstimate().has_value());
 }
 
+// Finite but absurd coordinates (a broken driver's) near the float maximum: kd-trees split
+// their ranges at (min + max) / 2, which overflows there, and FLANN aborts on an assertion.
+TEST_F(OrientationEstimatorTest, PointsNearTheFloatMaximumNeitherAbortNorCountAsTheObject) {
+  pcl::PointCloud<pcl::PointXYZ> far;
+  for (int i = 0; i < 400; ++i) {
+    far.push_back(pcl::PointXYZ(2e38f + 1e35f * static_cast<float>(i % 20),
+                                -3e38f + 1e35f * static_cast<float>(i / 20), 2.5e38f));
+  }
+  for (const RefinementMode refinement : {RefinementMode::kNone, RefinementMode::kIcp}) {
+    EstimatorParameters parameters;
+    parameters.refinement = refinement;
+    OrientationEstimator estimator(test::quickMugModel(), parameters);
+    const ViewUpdate alone = estimator.update(far, Eigen::Isometry3d::Identity());
+    EXPECT_FALSE(alone.updated);
+    EXPECT_FALSE(alone.skip_reason.empty());
+
+    auto [cloud, world_from_camera] = view(Eigen::Vector3d(1, 0, 0.4).normalized(), 0.3, 5);
+    cloud += far;
+    const ViewUpdate mixed = estimator.update(cloud, world_from_camera);
+    EXPECT_TRUE(mixed.updated) << mixed.skip_reason;
+  }
+}
+
 TEST_F(OrientationEstimatorTest, RefusesANonFiniteCameraPose) {
   OrientationEstimator estimator(test::quickMugModel(), {});
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
