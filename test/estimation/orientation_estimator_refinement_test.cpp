@@ -38,6 +38,11 @@ class EstimatorRefinementTest : public ::testing::Test {
     return {DepthRenderer(makeMug()).render(camera_from_object, DepthNoiseModel{true}, &rng),
             worldFromObject() * camera_from_object.inverse()};
   }
+  static EstimatorParameters withoutRefinement() {
+    EstimatorParameters parameters;
+    parameters.refinement = RefinementMode::kNone;
+    return parameters;
+  }
   static EstimatorParameters withIcp() {
     EstimatorParameters parameters;
     parameters.refinement = RefinementMode::kIcp;
@@ -63,7 +68,7 @@ class EstimatorRefinementTest : public ::testing::Test {
 TEST_F(EstimatorRefinementTest, OneViewGivesAGraspReadyPose) {
   // One view leaves the roll free; refinement settles it and the position with it.
   const auto [cloud, world_from_camera] = handleView();
-  OrientationEstimator plain(model(), {});
+  OrientationEstimator plain(model(), withoutRefinement());
   OrientationEstimator refined(model(), withIcp());
   ASSERT_TRUE(plain.update(cloud, world_from_camera).updated);
   const ViewUpdate update = refined.update(cloud, world_from_camera);
@@ -73,8 +78,8 @@ TEST_F(EstimatorRefinementTest, OneViewGivesAGraspReadyPose) {
   const double plain_error = rotationErrorDeg(plain.mapOrientation(), truth());
   const double refined_error = rotationErrorDeg(refined.mapOrientation(), truth());
   EXPECT_LT(refined_error, 5.0) << "without refinement " << plain_error << ", "
-                                << update.refined_poses << " poses in "
-                                << update.timing.refinement << " ms";
+                                << update.refined_poses << " poses in " << update.timing.refinement
+                                << " ms";
   EXPECT_LT(refined_error, plain_error);
   RecordProperty("refinement_ms", std::to_string(update.timing.refinement));
   RecordProperty("error_deg_without", std::to_string(plain_error));
@@ -95,7 +100,7 @@ TEST_F(EstimatorRefinementTest, ASkippedRefinementLeavesTheBeliefAsWithout) {
   const auto [cloud, world_from_camera] = handleView();
   EstimatorParameters parameters = withIcp();
   parameters.refinement_parameters.min_points = 1000000;  // no view has that many points
-  OrientationEstimator plain(model(), {});
+  OrientationEstimator plain(model(), withoutRefinement());
   OrientationEstimator skipped(model(), parameters);
   plain.update(cloud, world_from_camera);
   const ViewUpdate update = skipped.update(cloud, world_from_camera);

@@ -38,6 +38,13 @@ class OrientationEstimatorTest : public ::testing::Test {
     return {renderer_->render(camera_from_object, DepthNoiseModel{true}, &rng),
             worldFromObject() * camera_from_object.inverse()};
   }
+  // The belief alone: the tests of fusion and its bookkeeping (refinement has its own, in
+  // orientation_estimator_refinement_test.cpp).
+  static EstimatorParameters withoutRefinement() {
+    EstimatorParameters parameters;
+    parameters.refinement = RefinementMode::kNone;
+    return parameters;
+  }
   static Eigen::Vector4d trueOrientation() {
     return fromEigenQuaternion(Eigen::Quaterniond(worldFromObject().linear()));
   }
@@ -145,7 +152,7 @@ TEST_F(OrientationEstimatorTest, NewParametersApplyToTheNextViewAndARefusedOneCh
 }
 
 TEST_F(OrientationEstimatorTest, OneViewFusesAMeasurementThatNarrowsTheBelief) {
-  OrientationEstimator estimator(test::quickMugModel(), {});
+  OrientationEstimator estimator(test::quickMugModel(), withoutRefinement());
   const auto [cloud, world_from_camera] =
       view(Eigen::Vector3d(0.3, -0.5, 0.8).normalized(), 0.4, 1);
   const ViewUpdate update = estimator.update(cloud, world_from_camera);
@@ -166,10 +173,12 @@ TEST_F(OrientationEstimatorTest, OneViewFusesAMeasurementThatNarrowsTheBelief) {
 
 TEST_F(OrientationEstimatorTest, EstimateFollowsARotationOfTheFixedFrame) {
   // The same clouds with every camera pose expressed in a rotated fixed frame G must give the
-  // MAP G q: the estimator has no preferred world orientation.
+  // MAP G q: the fusion has no preferred world orientation. (Refinement is left out: its girdle
+  // starts begin at each girdle's numerically arbitrary mode, so ICP may settle a few degrees
+  // apart in the two frames.)
   const Eigen::Isometry3d G(Eigen::AngleAxisd(1.1, Eigen::Vector3d(0.2, -1, 0.4).normalized()));
-  OrientationEstimator plain(test::quickMugModel(), {});
-  OrientationEstimator rotated(test::quickMugModel(), {});
+  OrientationEstimator plain(test::quickMugModel(), withoutRefinement());
+  OrientationEstimator rotated(test::quickMugModel(), withoutRefinement());
   for (int v = 0; v < 3; ++v) {
     const Eigen::Vector3d direction =
         Eigen::Vector3d(std::cos(2.1 * v), std::sin(2.1 * v), 0.5 - 0.4 * v).normalized();

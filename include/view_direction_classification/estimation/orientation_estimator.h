@@ -52,12 +52,13 @@ struct EstimatorParameters {
   // the object was moved: the belief is reset. Smaller moves are followed. 0: twice the largest
   // centroid offset of the model's views plus 2 cm (their centroids differ by up to that much).
   double max_object_shift = 0.0;
-  // Geometric refinement after each fused view. The estimator's hypotheses: the 2 heaviest
+  // Geometric refinement after each fused view, on by default (doc/evaluation.md, "Refinement:
+  // none against icp"). The estimator's hypotheses: the 2 heaviest
   // components, girdles every 30 degrees (ICP's basin of the roll is about +-45 degrees), every
   // start aligned (max_refined 0): screening to the 3 best of a 10-degree girdle lost the roll on
   // the estimator test's quick-model view (113 degrees off; 8 best: 6.5), whose girdles lie up to
   // a grid spacing off the true direction.
-  RefinementMode refinement = RefinementMode::kNone;
+  RefinementMode refinement = RefinementMode::kIcp;
   RefinementParameters refinement_parameters = [] {
     RefinementParameters p;
     p.hypotheses.max_components = 2;
@@ -161,6 +162,8 @@ class OrientationEstimator {
   void setParameters(EstimatorParameters parameters);
 
   const BinghamMixture& belief() const { return filter_.belief(); }
+  // Measurements fused since the last reset: each view's, and its verified poses' when
+  // refinement keeps any (so two for a refined view); viewsFused() counts the views.
   int updateCount() const { return filter_.updateCount(); }
   // Distinct views in the belief: the frames fused since the last reset.
   int viewsFused() const { return fused_views_.size(); }
