@@ -15,6 +15,7 @@
 
 #include "fit_covariance.h"
 #include "icp_alignment.h"
+#include "roll_sector.h"
 #include "start_screening.h"
 #include "turned_starts.h"
 #include "view_direction_classification/common/error.h"
@@ -289,6 +290,28 @@ std::vector<RefinedPose> keptPoses(const std::vector<RefinedPose>& tried,
   return kept;
 }
 
+// The kept poses with their roll sectors (roll_sector.h), best first; a pose on a better one's
+// sector is that pose again, turned, and is dropped.
+std::vector<RefinedPose> withRollSectors(const std::vector<RefinedPose>& kept,
+                                         const ModelSurface& surface, const PoseVerifier& verifier,
+                                         const RefinementParameters& parameters) {
+  std::vector<RefinedPose> distinct;
+  for (RefinedPose pose : kept) {
+    const bool turned =
+        std::any_of(distinct.begin(), distinct.end(), [&](const RefinedPose& better) {
+          return onRollSector(better, pose, parameters.duplicate_angle_deg);
+        });
+    if (turned) continue;
+    if (!surface.symmetryAxes().empty()) {
+      pose.sector_axis = surface.symmetryAxes().front().direction();
+      pose.roll_sector_deg = verifiedRollSectorDeg(
+          surface, verifier, pose, parameters.restart_step_deg, parameters.keep_score_margin);
+    }
+    distinct.push_back(pose);
+  }
+  return distinct;
+}
+
 // What aligning and verifying a start takes: the same for the belief's starts and restarts.
 struct Aligner {
   IcpAlignment* icp;
@@ -441,6 +464,8 @@ RefinementResult PoseRefiner::refine(const BinghamMixture& belief, const Eigen::
     restartFrom(seed, *surface_, aligner, &result.tried);
   }
   result.kept = keptPoses(result.tried, parameters_);
+  if (parameters_.roll_sectors)
+    result.kept = withRollSectors(result.kept, *surface_, verifier, parameters_);
   for (RefinedPose& pose : result.kept) {
     pose.position_covariance = translationCovariance(
         *surface_, *thinned, pose.world_from_object, parameters_.max_correspondence_distance,

@@ -4,18 +4,13 @@
 
 namespace vdc {
 
-namespace {
-
-// world_from_object turned about `axis` (object frame) by `angle` [rad]: x -> c + R (x - c).
-Eigen::Isometry3d turned(const Eigen::Isometry3d& world_from_object,
-                         const Eigen::ParametrizedLine<double, 3>& axis, double angle) {
+Eigen::Isometry3d turnedAbout(const Eigen::Isometry3d& world_from_object,
+                              const Eigen::ParametrizedLine<double, 3>& axis, double angle) {
   Eigen::Isometry3d turn = Eigen::Isometry3d::Identity();
   turn.linear() = Eigen::AngleAxisd(angle, axis.direction()).toRotationMatrix();
   turn.translation() = axis.origin() - turn.linear() * axis.origin();
   return world_from_object * turn;
 }
-
-}  // namespace
 
 std::vector<Eigen::Isometry3d> turnedStarts(const ModelSurface& surface,
                                             const Eigen::Isometry3d& world_from_object,
@@ -24,10 +19,10 @@ std::vector<Eigen::Isometry3d> turnedStarts(const ModelSurface& surface,
   std::vector<Eigen::Isometry3d> starts;
   const int turns = static_cast<int>(std::lround(360.0 / step_deg));
   for (int k = 1; k < turns; ++k) {
-    starts.push_back(turned(world_from_object, axes[0], k * 2.0 * M_PI / turns));
+    starts.push_back(turnedAbout(world_from_object, axes[0], k * 2.0 * M_PI / turns));
   }
-  starts.push_back(turned(world_from_object, axes[1], M_PI));
-  starts.push_back(turned(world_from_object, axes[2], M_PI));
+  starts.push_back(turnedAbout(world_from_object, axes[1], M_PI));
+  starts.push_back(turnedAbout(world_from_object, axes[2], M_PI));
   return starts;
 }
 

@@ -14,6 +14,11 @@
 
 namespace vdc {
 
+// world_from_object turned about `axis` (object frame) by `angle` [rad]: x -> c + R (x - c) for
+// the axis' origin c.
+Eigen::Isometry3d turnedAbout(const Eigen::Isometry3d& world_from_object,
+                              const Eigen::ParametrizedLine<double, 3>& axis, double angle);
+
 // world_from_object turned about the model's best symmetry axis (model_surface.h) by every
 // multiple of step_deg short of a full turn (round(360 / step_deg) - 1 turns), and a half turn
 // about each of the other two (the flips that leave a box or a mirror-symmetric object's

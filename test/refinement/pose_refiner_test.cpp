@@ -217,6 +217,37 @@ TEST_F(PoseRefinerTest, KeepsBothModesOfAMirrorAmbiguousView) {
   EXPECT_LT(to_flipped, 5.0);
 }
 
+TEST_F(PoseRefinerTest, LeavesTheRollFreeWhereTheHandleIsHidden) {
+  // From behind the handle, level, the mug's turns about its axis look alike until the handle
+  // comes out beside the body: each kept pose carries that sector, so that its measurement does
+  // not claim a roll no point fixed.
+  const Eigen::Vector3d behind(-1.0, 0.0, 0.0);
+  const RefinementView v = view(behind, 0.0);
+  const Eigen::Vector4d flipped = turnedAboutSight(v, M_PI);
+  const BinghamMixture belief({0.5, 0.5}, {concentratedAt(truth()), concentratedAt(flipped)});
+  const RefinementResult result = PoseRefiner(*surface_).refine(belief, position(), {v});
+  ASSERT_FALSE(result.kept.empty()) << describe(result, truth());
+  for (const RefinedPose& pose : result.kept) {
+    EXPECT_GE(pose.roll_sector_deg, 30.0);
+    EXPECT_LT(pose.roll_sector_deg, 180.0);
+    EXPECT_GT(std::abs(pose.sector_axis.z()), 0.999) << pose.sector_axis.transpose();
+  }
+  RefinementParameters sharp;
+  sharp.roll_sectors = false;
+  const RefinementResult without = PoseRefiner(*surface_, sharp).refine(belief, position(), {v});
+  ASSERT_FALSE(without.kept.empty());
+  for (const RefinedPose& pose : without.kept) EXPECT_EQ(pose.roll_sector_deg, 0.0);
+}
+
+TEST_F(PoseRefinerTest, KeepsTheRollSharpWhereTheHandleIsSeen) {
+  const RefinementView v = view(kHandleSideOn, 0.4);
+  const RefinementResult result = PoseRefiner(*surface_).refine(
+      BinghamMixture({1.0}, {concentratedAt(truth())}), position(), {v});
+  ASSERT_FALSE(result.kept.empty()) << describe(result, truth());
+  EXPECT_EQ(result.kept.front().roll_sector_deg, 0.0);
+  EXPECT_LT(rotationErrorDeg(result.kept.front().orientation, truth()), 2.0);
+}
+
 TEST_F(PoseRefinerTest, RefusesIcpThatDivergesOrDoesNotConverge) {
   const RefinementView v = view(kHandleSideOn, 1.0);
   const BinghamMixture belief({1.0}, {concentratedAt(turnedAboutSight(v, 0.3), 20.0)});

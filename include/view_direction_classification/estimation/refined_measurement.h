@@ -19,10 +19,10 @@ struct RefinedFusionParameters {
 };
 
 // The verified poses (result.kept, q_WO) as one measurement over q_WO: one concentrated Bingham
-// component per pose, weighted by its verification likelihood, plus the uniform outlier
-// component; multiplying the belief by it keeps the belief one Bingham mixture. Throws
-// vdc::Error for no kept poses or invalid parameters (concentration or scale <= 0, outlier weight
-// outside (0, 1)).
+// component per pose (left free along its roll sector, pose_refiner.h), weighted by its
+// verification likelihood, plus the uniform outlier component; multiplying the belief by it keeps
+// the belief one Bingham mixture. Throws vdc::Error for no kept poses or invalid parameters
+// (concentration or scale <= 0, outlier weight outside (0, 1)).
 BinghamMixture refinedMeasurement(const RefinementResult& result,
                                   const RefinedFusionParameters& parameters);
 

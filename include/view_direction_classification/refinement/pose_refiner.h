@@ -65,6 +65,12 @@ struct RefinementParameters {
   // Accepted poses scoring within keep_score_margin of the best are kept; poses within
   // duplicate_angle_deg and duplicate_distance of a better one are the same pose.
   double keep_score_margin = 0.03;
+  // Roll sectors (doc/method.md, "Refinement"): each kept pose is turned about the model's axis
+  // of near symmetry by multiples of restart_step_deg, without ICP, while the turns still score
+  // within keep_score_margin; how far they do is the pose's roll sector, which its measurement
+  // leaves free (a spool's every turn, a mug seen from behind its handle). false: every kept pose
+  // is a sharp pose, however symmetric the object.
+  bool roll_sectors = true;
   double duplicate_angle_deg = 5.0;
   double duplicate_distance = 0.005;  // [m]
   // A kept pose's translation covariance (fit_covariance.h) has principal standard deviations in
@@ -94,6 +100,11 @@ struct RefinedPose {
   // [m^2, fixed frame] Covariance of world_from_object's translation from the fit (kept poses
   // only; zero otherwise).
   Eigen::Matrix3d position_covariance = Eigen::Matrix3d::Zero();
+  // [deg] Kept poses only: turns about sector_axis (object frame: the model's axis of near
+  // symmetry) up to this verify as well as the pose itself, so geometry leaves them open; 0: it
+  // fixes the roll, 180: any turn.
+  double roll_sector_deg = 0.0;
+  Eigen::Vector3d sector_axis = Eigen::Vector3d::UnitZ();
   bool accepted = false;
   std::string rejection;  // why it was refused (one sentence), empty when accepted
 };
@@ -102,8 +113,9 @@ struct RefinementResult {
   std::string skip_reason;  // non-empty: bad input, nothing was tried
   // Every hypothesis, in the order they were made; those screened out have a rejection saying so.
   std::vector<RefinedPose> tried;
-  // The distinct accepted poses within keep_score_margin of the best, best first. Empty when
-  // skipped or nothing was accepted; several where geometry cannot tell them apart.
+  // The distinct accepted poses within keep_score_margin of the best, best first, each with its
+  // roll sector; a pose on a better one's sector is not distinct. Empty when skipped or nothing
+  // was accepted; several where geometry cannot tell them apart.
   std::vector<RefinedPose> kept;
   double milliseconds = 0.0;
   bool skipped() const { return !skip_reason.empty(); }

@@ -1,0 +1,73 @@
+#include "view_direction_classification/estimation/refined_measurement.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "view_direction_classification/common/error.h"
+#include "view_direction_classification/common/quaternion.h"
+
+namespace vdc {
+namespace {
+
+// A kept pose at a fixed orientation whose sector axis is the object's z.
+RefinedPose keptPose(double roll_sector_deg) {
+  RefinedPose pose;
+  pose.orientation = quaternionFromAxisAngle(Eigen::Vector3d(0.3, -0.5, 0.8).normalized(), 1.1);
+  pose.sector_axis = Eigen::Vector3d::UnitZ();
+  pose.roll_sector_deg = roll_sector_deg;
+  pose.score.inlier_fraction = 0.95;
+  return pose;
+}
+
+// The measurement's log density at the pose turned by angle_deg about the object's `axis`,
+// relative to its density at the pose.
+double relativeLogDensity(const RefinedPose& pose, const Eigen::Vector3d& axis, double angle_deg) {
+  RefinementResult result;
+  result.kept = {pose};
+  const BinghamMixture measurement = refinedMeasurement(result, RefinedFusionParameters{});
+  const Eigen::Vector4d turned =
+      quaternionMultiply(pose.orientation, quaternionFromAxisAngle(axis, angle_deg * M_PI / 180));
+  return measurement.logDensity(turned) - measurement.logDensity(pose.orientation);
+}
+
+TEST(RefinedMeasurement, ASharpPoseFallsOffEquallyAboutEveryAxis) {
+  const RefinedPose pose = keptPose(0.0);
+  for (const Eigen::Vector3d axis :
+       {Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitZ()}) {
+    // exp(-400 sin^2(7.5 deg)): 6.8 nats, less the uniform outlier component's floor.
+    EXPECT_LT(relativeLogDensity(pose, axis, 15.0), -5.0) << axis.transpose();
+  }
+}
+
+TEST(RefinedMeasurement, AWholeTurnSectorLeavesTheRollFreeAndTheTiltSharp) {
+  const RefinedPose pose = keptPose(180.0);
+  for (const double angle : {30.0, 90.0, 180.0}) {
+    EXPECT_NEAR(relativeLogDensity(pose, Eigen::Vector3d::UnitZ(), angle), 0.0, 1e-6) << angle;
+  }
+  EXPECT_LT(relativeLogDensity(pose, Eigen::Vector3d::UnitX(), 15.0), -5.0);
+  EXPECT_LT(relativeLogDensity(pose, Eigen::Vector3d::UnitY(), 15.0), -5.0);
+}
+
+TEST(RefinedMeasurement, APartialSectorIsOneStandardDeviationOfTheRoll) {
+  // 30 degrees: z = 2 / sigma^2 = 7.3, exp(-z sin^2(15 deg)) = exp(-0.49), a Gaussian's
+  // exp(-1/2) at one sigma.
+  const RefinedPose pose = keptPose(30.0);
+  EXPECT_NEAR(relativeLogDensity(pose, Eigen::Vector3d::UnitZ(), 30.0), -0.49, 0.03);
+  EXPECT_LT(relativeLogDensity(pose, Eigen::Vector3d::UnitX(), 15.0), -5.0);
+}
+
+TEST(RefinedMeasurement, RefusesNoPosesAndInvalidParameters) {
+  EXPECT_THROW(refinedMeasurement(RefinementResult{}, RefinedFusionParameters{}), Error);
+  RefinementResult result;
+  result.kept = {keptPose(0.0)};
+  RefinedFusionParameters bad;
+  bad.concentration = 0.0;
+  EXPECT_THROW(refinedMeasurement(result, bad), Error);
+  bad = RefinedFusionParameters{};
+  bad.outlier_weight = 1.0;
+  EXPECT_THROW(refinedMeasurement(result, bad), Error);
+}
+
+}  // namespace
+}  // namespace vdc
