@@ -7,6 +7,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <functional>
+#include <memory>
 #include <numeric>
 #include <sstream>
 #include <string>
@@ -15,6 +17,7 @@
 
 #include "fit_covariance.h"
 #include "icp_alignment.h"
+#include "parallel_for.h"
 #include "roll_sector.h"
 #include "start_screening.h"
 #include "turned_starts.h"
@@ -78,6 +81,9 @@ void checkParameters(const RefinementParameters& p) {
   if (!(p.restart_step_deg > 0.0 && p.restart_step_deg <= 180.0)) {
     throw Error("refinement's restart_step_deg must be in (0, 180], got " +
                 std::to_string(p.restart_step_deg));
+  }
+  if (p.threads < 1) {
+    throw Error("refinement's threads must be at least 1, got " + std::to_string(p.threads));
   }
   if (!(p.keep_score_margin >= 0.0) || !std::isfinite(p.keep_score_margin)) {
     throw Error("refinement's keep_score_margin must be >= 0 and finite, got " +
@@ -312,17 +318,21 @@ std::vector<RefinedPose> withRollSectors(const std::vector<RefinedPose>& kept,
   return distinct;
 }
 
-// What aligning and verifying a start takes: the same for the belief's starts and restarts.
+// What aligning and verifying a start takes: the same for the belief's starts and restarts. One
+// ICP per worker thread (an IcpAlignment is not thread-safe; the verifier and the belief are).
 struct Aligner {
-  IcpAlignment* icp;
+  std::vector<std::unique_ptr<IcpAlignment>> icps;
   const PoseVerifier* verifier;
   const BinghamMixture* belief;
   const RefinementParameters* parameters;
 
-  // Aligns *pose from its start (whose start_score is set) and verifies the result.
-  void alignAndVerify(const Eigen::Vector4d& reference, RefinedPose* pose) const {
+  int workers() const { return static_cast<int>(icps.size()); }
+
+  // Aligns *pose from its start (whose start_score is set) with worker's ICP and verifies the
+  // result.
+  void alignAndVerify(int worker, const Eigen::Vector4d& reference, RefinedPose* pose) const {
     pose->screened_in = true;
-    const IcpOutcome outcome = icp->align(pose->start.inverse());
+    const IcpOutcome outcome = icps[worker]->align(pose->start.inverse());
     pose->converged = outcome.converged;
     pose->world_from_object = outcome.converged ? outcome.object_from_world.inverse() : pose->start;
     pose->orientation = orientationOf(pose->world_from_object);
@@ -331,6 +341,16 @@ struct Aligner {
     if (outcome.converged) pose->score = verifier->score(pose->world_from_object);
     pose->rejection = rejection(*pose, outcome, *belief, reference, *parameters);
     pose->accepted = pose->rejection.empty();
+  }
+
+  // Sets the start score of each pose at `indices` and aligns and verifies it, in parallel.
+  void alignAll(const std::vector<std::size_t>& indices, std::vector<RefinedPose>* poses,
+                const std::function<Eigen::Vector4d(const RefinedPose&)>& reference) const {
+    parallelFor(indices.size(), workers(), [&](int worker, std::size_t i) {
+      RefinedPose& pose = (*poses)[indices[i]];
+      pose.start_score = verifier->score(pose.start);
+      alignAndVerify(worker, reference(pose), &pose);
+    });
   }
 };
 
@@ -362,7 +382,6 @@ void restartFrom(std::size_t seed_index, const ModelSurface& surface, const Alig
   const RefinedPose seed = (*tried)[seed_index];
   const RefinementParameters& parameters = *aligner.parameters;
   std::vector<RefinedPose> turned;
-  std::vector<double> screening_scores;
   for (const Eigen::Isometry3d& start :
        turnedStarts(surface, seed.world_from_object, parameters.restart_step_deg)) {
     RefinedPose pose;
@@ -370,27 +389,27 @@ void restartFrom(std::size_t seed_index, const ModelSurface& surface, const Alig
     pose.start_orientation = pose.orientation = orientationOf(start);
     pose.component = seed.component;
     pose.restarted_from = static_cast<int>(seed_index);
-    const IcpOutcome shortly =
-        aligner.icp->align(start.inverse(), parameters.restart_screening_iterations);
-    screening_scores.push_back(
-        shortly.degenerate ? -1.0
-                           : aligner.verifier->score(shortly.object_from_world.inverse()).score());
     pose.rejection = "screened out: after " +
                      std::to_string(parameters.restart_screening_iterations) +
                      " ICP iterations it verifies worse than its seed's " +
                      std::to_string(parameters.restart_refined) + " best turns";
     turned.push_back(pose);
   }
+  std::vector<double> screening_scores(turned.size());
+  parallelFor(turned.size(), aligner.workers(), [&](int worker, std::size_t i) {
+    const IcpOutcome shortly = aligner.icps[worker]->align(turned[i].start.inverse(),
+                                                           parameters.restart_screening_iterations);
+    screening_scores[i] =
+        shortly.degenerate ? -1.0
+                           : aligner.verifier->score(shortly.object_from_world.inverse()).score();
+  });
   std::vector<std::size_t> order(turned.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     return screening_scores[a] > screening_scores[b];
   });
   order.resize(std::min(order.size(), static_cast<std::size_t>(parameters.restart_refined)));
-  for (const std::size_t index : order) {
-    turned[index].start_score = aligner.verifier->score(turned[index].start);
-    aligner.alignAndVerify(seed.start_orientation, &turned[index]);
-  }
+  aligner.alignAll(order, &turned, [&](const RefinedPose&) { return seed.start_orientation; });
   tried->insert(tried->end(), turned.begin(), turned.end());
 }
 
@@ -449,16 +468,16 @@ RefinementResult PoseRefiner::refine(const BinghamMixture& belief, const Eigen::
 
   const PoseVerifier verifier(surface_, thinnedViews(observation.views, parameters_.scene_voxel),
                               parameters_.verification);
-  IcpAlignment alignment(
-      surface_, icpSource(*evenSubsample(*thinned, parameters_.icp_points)),
-      {parameters_.max_iterations, parameters_.max_correspondence_distance,
-       parameters_.convergence_translation, parameters_.convergence_rotation_deg});
-  const Aligner aligner{&alignment, &verifier, &belief, &parameters_};
-  for (const std::size_t index : bestStarts(distances, components, parameters_.max_refined)) {
-    RefinedPose& pose = result.tried[index];
-    pose.start_score = verifier.score(pose.start);
-    aligner.alignAndVerify(pose.start_orientation, &pose);
+  Aligner aligner{{}, &verifier, &belief, &parameters_};
+  const auto source = icpSource(*evenSubsample(*thinned, parameters_.icp_points));
+  for (int worker = 0; worker < parameters_.threads; ++worker) {
+    aligner.icps.push_back(std::make_unique<IcpAlignment>(
+        surface_, source,
+        IcpSettings{parameters_.max_iterations, parameters_.max_correspondence_distance,
+                    parameters_.convergence_translation, parameters_.convergence_rotation_deg}));
   }
+  aligner.alignAll(bestStarts(distances, components, parameters_.max_refined), &result.tried,
+                   [](const RefinedPose& pose) { return pose.start_orientation; });
   for (const std::size_t seed :
        restartSeeds(result.tried, parameters_.restart_seeds, parameters_)) {
     restartFrom(seed, *surface_, aligner, &result.tried);

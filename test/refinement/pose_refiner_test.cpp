@@ -248,6 +248,30 @@ TEST_F(PoseRefinerTest, KeepsTheRollSharpWhereTheHandleIsSeen) {
   EXPECT_LT(rotationErrorDeg(result.kept.front().orientation, truth()), 2.0);
 }
 
+TEST_F(PoseRefinerTest, AligningOnSeveralThreadsGivesTheSameResultAsOne) {
+  // A girdle's starts and the restarts are aligned in parallel; each is independent, so the
+  // result must be the serial one to the bit.
+  const RefinementView v = view(kHandleSideOn, 1.3);
+  RefinementParameters serial, parallel;
+  serial.threads = 1;
+  parallel.threads = 3;
+  serial.max_refined = parallel.max_refined = 0;  // every start aligned
+  const BinghamMixture belief = girdleBelief(kHandleSideOn, v);
+  const RefinementResult one = PoseRefiner(*surface_, serial).refine(belief, position(), {v});
+  const RefinementResult three = PoseRefiner(*surface_, parallel).refine(belief, position(), {v});
+  ASSERT_EQ(one.tried.size(), three.tried.size());
+  ASSERT_GT(one.tried.size(), 10u);
+  for (std::size_t i = 0; i < one.tried.size(); ++i) {
+    EXPECT_TRUE(one.tried[i].world_from_object.isApprox(three.tried[i].world_from_object, 0.0))
+        << i;
+    EXPECT_EQ(one.tried[i].score.score(), three.tried[i].score.score()) << i;
+    EXPECT_EQ(one.tried[i].rejection, three.tried[i].rejection) << i;
+  }
+  ASSERT_EQ(one.kept.size(), three.kept.size());
+  ASSERT_FALSE(one.kept.empty());
+  EXPECT_LT(rotationErrorDeg(one.kept.front().orientation, truth()), 2.0);
+}
+
 TEST_F(PoseRefinerTest, RefusesIcpThatDivergesOrDoesNotConverge) {
   const RefinementView v = view(kHandleSideOn, 1.0);
   const BinghamMixture belief({1.0}, {concentratedAt(turnedAboutSight(v, 0.3), 20.0)});
@@ -363,6 +387,9 @@ TEST_F(PoseRefinerTest, RefusesInvalidParameters) {
   EXPECT_THROW(PoseRefiner(*surface_, parameters), Error);
   parameters = {};
   parameters.verification.depth_noise_at_1m = -0.001;
+  EXPECT_THROW(PoseRefiner(*surface_, parameters), Error);
+  parameters = {};
+  parameters.threads = 0;
   EXPECT_THROW(PoseRefiner(*surface_, parameters), Error);
 }
 

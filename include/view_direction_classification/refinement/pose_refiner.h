@@ -62,6 +62,8 @@ struct RefinementParameters {
   double restart_step_deg = 30.0;
   int restart_screening_iterations = 10;
   int restart_refined = 2;
+  // Threads that align starts (each ICP is independent; the result does not depend on them).
+  int threads = 2;
   // Accepted poses scoring within keep_score_margin of the best are kept; poses within
   // duplicate_angle_deg and duplicate_distance of a better one are the same pose.
   double keep_score_margin = 0.03;
