@@ -54,16 +54,16 @@ struct EstimatorParameters {
   double max_object_shift = 0.0;
   // Geometric refinement after each fused view, on by default (doc/evaluation.md, "Refinement:
   // none against icp"). The estimator's hypotheses: the 2 heaviest
-  // components, girdles every 30 degrees (ICP's basin of the roll is about +-45 degrees), every
-  // start aligned (max_refined 0): screening to the 3 best of a 10-degree girdle lost the roll on
-  // the estimator test's quick-model view (113 degrees off; 8 best: 6.5), whose girdles lie up to
-  // a grid spacing off the true direction.
+  // components, girdles every 30 degrees (ICP's basin of the roll is about +-45 degrees), the 3
+  // best-screened starts of each aligned (max_refined 3): since the restarts about the axis of
+  // near symmetry, the same medians as aligning every start on the mug and three untuned objects
+  // at half the cost (doc/evaluation.md, "Refinement: none against icp").
   RefinementMode refinement = RefinementMode::kIcp;
   RefinementParameters refinement_parameters = [] {
     RefinementParameters p;
     p.hypotheses.max_components = 2;
     p.hypotheses.girdle_step_deg = 30.0;
-    p.max_refined = 0;
+    p.max_refined = 3;
     return p;
   }();
   RefinedFusionParameters refined_fusion;
