@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "ray_footprint.h"
 #include "view_direction_classification/common/error.h"
 
 namespace vdc {
@@ -43,6 +44,10 @@ PoseVerifier::PoseVerifier(std::shared_ptr<const ModelSurface> surface,
     std::vector<Eigen::Vector3f> rays;
     rays.reserve(view.points->size());
     for (const auto& p : view.points->points) rays.emplace_back(p.x / p.z, p.y / p.z, 0.0f);
+    std::vector<Eigen::Vector2f> flat;
+    flat.reserve(rays.size());
+    for (const Eigen::Vector3f& ray : rays) flat.push_back(ray.head<2>());
+    indexed->footprint = convexHull(std::move(flat));
     indexed->rays = std::make_unique<const NearestPoints>(std::move(rays));
     indexed->camera_from_world = view.world_from_camera.inverse();
     views_.push_back(std::move(indexed));
@@ -111,6 +116,11 @@ void PoseVerifier::addViewScore(const IndexedView& view, const Eigen::Isometry3d
   for (std::size_t i = 0; i < predicted.size(); ++i) {
     const float ray_radius = static_cast<float>(neighbour_radius_) / predicted[i].z();
     if (index[i] < 0 || squared[i] > ray_radius * ray_radius) {
+      if (parameters_.judge_only_within_footprint &&
+          !insideConvexPolygon(view.footprint, rays[i].head<2>(), ray_radius)) {
+        --score->predicted;  // hidden or cropped away, for all we know: not judged
+        continue;
+      }
       ++*violations;  // predicted where nothing was seen
       continue;
     }

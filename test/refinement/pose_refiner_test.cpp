@@ -272,6 +272,39 @@ TEST_F(PoseRefinerTest, AligningOnSeveralThreadsGivesTheSameResultAsOne) {
   EXPECT_LT(rotationErrorDeg(one.kept.front().orientation, truth()), 2.0);
 }
 
+TEST_F(PoseRefinerTest, AViewCroppedToThePatchAroundTheHandleStillVerifiesTheTruePose) {
+  // Only the points within 5 cm of the handle's tip are left, as if the rest of the mug were
+  // hidden behind something the segmentation removed. The rest of the true pose's predicted
+  // surface lies outside the view's footprint, where nothing observed is no contradiction.
+  RefinementView v = view(kHandleSideOn, 0.7);
+  Eigen::Vector3f tip(-1e9f, 0.0f, 0.0f);
+  for (const Eigen::Vector3f& vertex : mesh_->vertices) {
+    if (vertex.x() > tip.x()) tip = vertex;
+  }
+  const Eigen::Isometry3f object_from_camera =
+      (world_from_object_.inverse() * v.world_from_camera).cast<float>();
+  auto patch = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  for (const auto& p : v.points->points) {
+    if ((object_from_camera * p.getVector3fMap() - tip).norm() < 0.05f) patch->push_back(p);
+  }
+  ASSERT_GT(patch->size(), 200u);
+  ASSERT_LT(patch->size(), v.points->size() / 2);
+  v.points = patch;
+  const PoseVerifier within(*surface_, {v});
+  const VerificationScore truth_within = within.score(world_from_object_);
+  EXPECT_GT(truth_within.score(), 0.8)
+      << truth_within.inlier_fraction << " " << truth_within.violation_fraction;
+  // The mirrored handle (a half turn about the line of sight) still contradicts the patch.
+  Eigen::Isometry3d mirrored = world_from_object_;
+  mirrored.linear() = quaternionToRotationMatrix(turnedAboutSight(v, M_PI));
+  EXPECT_LT(within.score(mirrored).score(), truth_within.score() - 0.3);
+  // Judged everywhere, the true pose's hidden body counts against it: below acceptance.
+  VerificationParameters everywhere;
+  everywhere.judge_only_within_footprint = false;
+  const PoseVerifier everywhere_verifier(*surface_, {v}, everywhere);
+  EXPECT_LT(everywhere_verifier.score(world_from_object_).score(), 0.5);
+}
+
 TEST_F(PoseRefinerTest, RefusesIcpThatDivergesOrDoesNotConverge) {
   const RefinementView v = view(kHandleSideOn, 1.0);
   const BinghamMixture belief({1.0}, {concentratedAt(turnedAboutSight(v, 0.3), 20.0)});

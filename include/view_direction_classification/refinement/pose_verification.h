@@ -41,6 +41,11 @@ struct VerificationParameters {
   // Samples facing the camera at a cosine below this (grazing, near the silhouette) are not
   // predicted: their visibility depends on sub-pixel geometry.
   double min_facing_cosine = 0.3;
+  // A predicted sample where nothing was observed contradicts the view only inside the view's
+  // footprint (the convex hull of its points' rays, grown by the neighbour radius): outside it
+  // the sample may be hidden by an occluder the segmentation removed or lie beyond a crop, so it
+  // is not judged. false: judged everywhere (a segmented object whose whole silhouette is seen).
+  bool judge_only_within_footprint = true;
 };
 
 // Throws vdc::Error for negative or non-finite parameters.
@@ -78,6 +83,7 @@ class PoseVerifier {
     pcl::PointCloud<pcl::PointXYZ>::ConstPtr points;
     std::unique_ptr<const NearestPoints> rays;  // (x/z, y/z, 0) of each point
     Eigen::Isometry3d camera_from_world;
+    std::vector<Eigen::Vector2f> footprint;  // convex hull of the rays, counter-clockwise
   };
   void addViewScore(const IndexedView& view, const Eigen::Isometry3d& world_from_object,
                     int* inliers, int* violations, VerificationScore* score) const;
