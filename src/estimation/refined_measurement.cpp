@@ -12,28 +12,31 @@ namespace vdc {
 
 namespace {
 
-// The exponent of a pose's component: exp(-c sin^2(theta/2)) in each of the three directions of
-// a turn theta about the object's axes, except about its sector axis, where the concentration
-// z = 2 / sigma^2 makes the roll sector one standard deviation (none for a whole turn). A
-// Bingham concentration z is a Gaussian's 2 / sigma^2: sin^2(theta / 2) ~ theta^2 / 4.
+// The exponent of a pose's component. A small turn t of the pose (q (1, t / 2), object frame)
+// has density exp(-t^T L t / 2) for the information L: the inverse of the fit's rotation
+// covariance, or c / 2 I for the fixed concentration c when the pose has none;
+// with V = [q (0, e_x), q (0, e_y), q (0, e_z)], V^T x = t / 2, so the exponent is -2 V L V^T.
+// About the sector axis a of a pose with a roll sector the information is replaced by
+// 1 / sigma^2 with sigma the sector (none for a whole turn).
 Eigen::Matrix4d poseExponent(const RefinedPose& pose, double concentration) {
   const Eigen::Vector4d& q = pose.orientation;
-  if (!(pose.roll_sector_deg > 0.0)) return concentration * q * q.transpose();
-  const Eigen::Vector3d axis = pose.sector_axis.normalized();
-  const Eigen::Vector3d first = axis.unitOrthogonal(), second = axis.cross(first);
-  const auto turnDirection = [&](const Eigen::Vector3d& v) {
-    return quaternionMultiply(q, Eigen::Vector4d(0.0, v.x(), v.y(), v.z()));
-  };
-  const double sigma = pose.roll_sector_deg * M_PI / 180.0;
-  const double about_axis =
-      pose.roll_sector_deg >= 180.0 ? 0.0 : std::min(concentration, 2.0 / (sigma * sigma));
-  Eigen::Matrix4d exponent = Eigen::Matrix4d::Zero();
-  for (const Eigen::Vector3d& v : {first, second}) {
-    const Eigen::Vector4d d = turnDirection(v);
-    exponent -= concentration * d * d.transpose();
+  Eigen::Matrix3d information = 0.5 * concentration * Eigen::Matrix3d::Identity();
+  if (pose.rotation_covariance.trace() > 0.0) information = pose.rotation_covariance.inverse();
+  if (pose.roll_sector_deg > 0.0) {
+    const Eigen::Vector3d a = pose.sector_axis.normalized();
+    const Eigen::Matrix3d across = Eigen::Matrix3d::Identity() - a * a.transpose();
+    const double sigma = pose.roll_sector_deg * M_PI / 180.0;
+    const double about_axis = pose.roll_sector_deg >= 180.0 ? 0.0 : 1.0 / (sigma * sigma);
+    // Never sharper about the axis than the fit itself says.
+    information = across * information * across +
+                  std::min(about_axis, a.dot(information * a)) * a * a.transpose();
   }
-  const Eigen::Vector4d d = turnDirection(axis);
-  return exponent - about_axis * d * d.transpose();
+  Eigen::Matrix<double, 4, 3> turns;
+  for (int i = 0; i < 3; ++i) {
+    const Eigen::Vector3d e = Eigen::Vector3d::Unit(i);
+    turns.col(i) = quaternionMultiply(q, Eigen::Vector4d(0.0, e.x(), e.y(), e.z()));
+  }
+  return -2.0 * turns * information * turns.transpose();
 }
 
 }  // namespace

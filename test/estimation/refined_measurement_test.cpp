@@ -57,6 +57,22 @@ TEST(RefinedMeasurement, APartialSectorIsOneStandardDeviationOfTheRoll) {
   EXPECT_LT(relativeLogDensity(pose, Eigen::Vector3d::UnitX(), 15.0), -5.0);
 }
 
+TEST(RefinedMeasurement, TheFitsRotationCovarianceShapesTheComponent) {
+  // sigma 1 degree about x and y, 4 degrees about z: a 2-degree turn costs
+  // (2 / sigma)^2 / 2 nats, 2 about x and 0.125 about z.
+  RefinedPose pose = keptPose(0.0);
+  const double degree = M_PI / 180.0;
+  pose.rotation_covariance = Eigen::Vector3d(1.0, 1.0, 16.0).asDiagonal();
+  pose.rotation_covariance *= degree * degree;
+  EXPECT_NEAR(relativeLogDensity(pose, Eigen::Vector3d::UnitX(), 2.0), -2.0, 0.02);
+  EXPECT_NEAR(relativeLogDensity(pose, Eigen::Vector3d::UnitZ(), 2.0), -0.125, 0.01);
+  // A roll sector frees z further, never sharpens it: 30 degrees is looser than 4.
+  pose.roll_sector_deg = 30.0;
+  EXPECT_NEAR(relativeLogDensity(pose, Eigen::Vector3d::UnitZ(), 30.0), -0.49, 0.03);
+  pose.roll_sector_deg = 2.0;
+  EXPECT_NEAR(relativeLogDensity(pose, Eigen::Vector3d::UnitZ(), 2.0), -0.125, 0.01);
+}
+
 TEST(RefinedMeasurement, RefusesNoPosesAndInvalidParameters) {
   EXPECT_THROW(refinedMeasurement(RefinementResult{}, RefinedFusionParameters{}), Error);
   RefinementResult result;

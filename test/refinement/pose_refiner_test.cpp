@@ -179,6 +179,38 @@ TEST_F(PoseRefinerTest, AKeptPoseCarriesItsFitsPositionCovariance) {
       << 1000 * variances.cwiseSqrt().transpose() << " mm";
 }
 
+TEST_F(PoseRefinerTest, AKeptPoseCarriesItsFitsRotationCovarianceFlooredByItsSpread) {
+  const RefinementView v = view(kHandleSideOn, 2.1);
+  const RefinementResult result =
+      PoseRefiner(*surface_).refine(girdleBelief(kHandleSideOn, v), position(), {v});
+  ASSERT_FALSE(result.kept.empty()) << describe(result, truth());
+  const RefinedPose& pose = result.kept[0];
+  const Eigen::Matrix3d& covariance = pose.rotation_covariance;
+  EXPECT_TRUE(covariance.isApprox(covariance.transpose(), 1e-12));
+  const Eigen::Vector3d sigmas_deg =
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance).eigenvalues().cwiseSqrt() * 180.0 /
+      M_PI;
+  const RefinementParameters defaults;
+  // A whole view of the mug spreads its matches over a few centimetres: the 1 mm floor turns it
+  // by 1-2 degrees, above the 1-degree floor and below the 4.05-degree ceiling.
+  EXPECT_GT(sigmas_deg.minCoeff(), 1.2) << sigmas_deg.transpose();
+  EXPECT_LT(sigmas_deg.minCoeff(), 2.5) << sigmas_deg.transpose();
+  EXPECT_LE(sigmas_deg.maxCoeff(), 1.001 * defaults.max_rotation_sigma_deg);
+  // The true orientation lies within the covariance's 3-sigma ellipsoid (a turn in the object
+  // frame: truth = pose exp(t)).
+  const Eigen::Vector4d relative =
+      quaternionMultiply(quaternionConjugate(pose.orientation), truth());
+  const Eigen::Vector3d turn = 2.0 * relative.tail<3>() * (relative(0) < 0 ? -1.0 : 1.0);
+  EXPECT_LT(turn.dot(covariance.inverse() * turn), 9.0) << turn.transpose() * 180 / M_PI;
+  // Polishing on every point never makes a kept pose verify worse than the starts' ICP left it.
+  RefinementParameters unpolished;
+  unpolished.polish_iterations = 0;
+  const RefinementResult rough =
+      PoseRefiner(*surface_, unpolished).refine(girdleBelief(kHandleSideOn, v), position(), {v});
+  ASSERT_FALSE(rough.kept.empty());
+  EXPECT_GE(pose.score.score(), rough.kept[0].score.score());
+}
+
 TEST_F(PoseRefinerTest, VerificationRejectsTheMirroredHandle) {
   // Turned 180 degrees about the line of sight the body fits again but the handle is on the wrong
   // side: its points are unexplained and the model's handle stands in free space.
@@ -423,6 +455,12 @@ TEST_F(PoseRefinerTest, RefusesInvalidParameters) {
   EXPECT_THROW(PoseRefiner(*surface_, parameters), Error);
   parameters = {};
   parameters.threads = 0;
+  EXPECT_THROW(PoseRefiner(*surface_, parameters), Error);
+  parameters = {};
+  parameters.min_rotation_sigma_deg = 5.0;  // above max_rotation_sigma_deg
+  EXPECT_THROW(PoseRefiner(*surface_, parameters), Error);
+  parameters = {};
+  parameters.polish_iterations = -1;
   EXPECT_THROW(PoseRefiner(*surface_, parameters), Error);
 }
 

@@ -7,9 +7,9 @@ namespace vdc {
 
 // How verified poses enter the belief (doc/method.md, "Refinement").
 struct RefinedFusionParameters {
-  // Concentration of each verified pose's component: exp(-c sin^2(theta/2)) halves at
-  // theta = 2 asin(sqrt(ln 2 / c)), 4.8 degrees for c = 400 (about what ICP's fit is good to on
-  // the 4 mm surface set).
+  // Concentration of a verified pose's component when the pose carries no rotation covariance
+  // from its fit (pose_refiner.h; the refiner gives every kept pose one): exp(-c sin^2(theta/2))
+  // halves at theta = 2 asin(sqrt(ln 2 / c)), 4.8 degrees for c = 400.
   double concentration = 400.0;
   // A pose's weight is exp(likelihood_scale * score): a 0.05 better score counts e times more.
   double likelihood_scale = 20.0;
@@ -19,7 +19,8 @@ struct RefinedFusionParameters {
 };
 
 // The verified poses (result.kept, q_WO) as one measurement over q_WO: one concentrated Bingham
-// component per pose (left free along its roll sector, pose_refiner.h), weighted by its
+// component per pose, shaped by its fit's rotation covariance and left free along its roll
+// sector (pose_refiner.h), weighted by its
 // verification likelihood, plus the uniform outlier component; multiplying the belief by it keeps
 // the belief one Bingham mixture. Throws vdc::Error for no kept poses or invalid parameters
 // (concentration or scale <= 0, outlier weight outside (0, 1)).

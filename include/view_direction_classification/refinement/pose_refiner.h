@@ -80,6 +80,19 @@ struct RefinementParameters {
   // about a quarter of the model's 4 mm sample spacing its own figure would be over-confident.
   double min_position_sigma = 0.001;  // [m]
   double max_position_sigma = 0.05;   // [m]
+  // The same for its orientation (fit_covariance.h), principal standard deviations of a turn in
+  // [floor, max_rotation_sigma_deg], the floor being min_rotation_sigma_deg or min_position_sigma
+  // over the matched points' spread, whichever is larger (a 5 cm patch: about 4 degrees, a whole
+  // mug view about 1.5); 4.05 degrees is a Bingham concentration of 400, what every kept pose
+  // was given before the fit's covariance was used.
+  double min_rotation_sigma_deg = 1.0;
+  double max_rotation_sigma_deg = 4.05;
+  // Polish: each kept pose is aligned once more on every voxel-filtered observed point (not
+  // about icp_points of them) with correspondences within polish_correspondence_distance; the
+  // polished pose replaces it when ICP converged within duplicate_angle_deg and
+  // duplicate_distance of it and it verifies at least as well. 0 iterations: no polish.
+  int polish_iterations = 50;
+  double polish_correspondence_distance = 0.005;  // [m]
 };
 
 // One hypothesis and what refinement made of it.
@@ -102,6 +115,9 @@ struct RefinedPose {
   // [m^2, fixed frame] Covariance of world_from_object's translation from the fit (kept poses
   // only; zero otherwise).
   Eigen::Matrix3d position_covariance = Eigen::Matrix3d::Zero();
+  // [rad^2, object frame] Covariance of its orientation from the fit, as a turn t applied as
+  // world_from_object * exp(t) (kept poses only; zero otherwise).
+  Eigen::Matrix3d rotation_covariance = Eigen::Matrix3d::Zero();
   // [deg] Kept poses only: turns about sector_axis (object frame: the model's axis of near
   // symmetry) up to this verify as well as the pose itself, so geometry leaves them open; 0: it
   // fixes the roll, 180: any turn.
