@@ -1,5 +1,7 @@
 #include "view_direction_classification/estimation/orientation_estimator.h"
 
+#include <pcl/filters/voxel_grid.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -100,6 +102,9 @@ void checkParameters(const EstimatorParameters& p) {
   if (!(p.psum_exponent > 0.0) || !std::isfinite(p.psum_exponent)) {
     throw Error("psum_exponent must be finite and positive, got " +
                 std::to_string(p.psum_exponent));
+  }
+  if (p.refinement_views < 1) {
+    throw Error("refinement_views must be at least 1, got " + std::to_string(p.refinement_views));
   }
   if (!(p.max_object_shift >= 0.0) || !std::isfinite(p.max_object_shift)) {
     throw Error("max_object_shift must be a finite length >= 0, got " +
@@ -290,13 +295,17 @@ ViewUpdate OrientationEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cl
 void OrientationEstimator::refineAfterFusion(const pcl::PointCloud<pcl::PointXYZ>& object_points,
                                              const Eigen::Isometry3d& world_from_camera,
                                              ViewUpdate* result) {
-  // Only this view's points for now: earlier views' clouds are not kept.
+  // This view first, then the latest earlier ones (thinned to the refiner's voxel): the object
+  // stands still and the camera poses are known, so a pose must fit them all.
   RefinementView view;
   view.points = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>(object_points);
   view.world_from_camera = world_from_camera;
+  std::vector<RefinementView> views{view};
+  views.insert(views.end(), refined_views_.begin(), refined_views_.end());
   const std::optional<Eigen::Vector3d> position = positionEstimate();
   const RefinementResult refinement =
-      refiner_->refine(belief(), position.value_or(result->observed_centroid_world), {view});
+      refiner_->refine(belief(), position.value_or(result->observed_centroid_world), views);
+  rememberRefinedView(view);
   result->refinement_skip_reason = refinement.skip_reason;
   if (refinement.kept.empty()) return;
   filter_.update(refinedMeasurement(refinement, parameters_.refined_fusion));
@@ -306,6 +315,22 @@ void OrientationEstimator::refineAfterFusion(const pcl::PointCloud<pcl::PointXYZ
   refined_position_ = refinement.kept.front().world_from_object.translation();
   refined_position_covariance_ = refinement.kept.front().position_covariance;
   result->refined_poses = static_cast<int>(refinement.kept.size());
+}
+
+void OrientationEstimator::rememberRefinedView(const RefinementView& view) {
+  const int keep = parameters_.refinement_views - 1;
+  if (keep <= 0) {
+    refined_views_.clear();
+    return;
+  }
+  pcl::VoxelGrid<pcl::PointXYZ> grid;
+  grid.setInputCloud(view.points);
+  const auto leaf = static_cast<float>(parameters_.refinement_parameters.scene_voxel);
+  grid.setLeafSize(leaf, leaf, leaf);
+  auto thinned = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  grid.filter(*thinned);
+  refined_views_.push_front({thinned, view.world_from_camera});
+  while (static_cast<int>(refined_views_.size()) > keep) refined_views_.pop_back();
 }
 
 bool OrientationEstimator::selectFrame(const pcl::PointCloud<pcl::PointXYZ>& cloud,
@@ -402,6 +427,7 @@ void OrientationEstimator::reset() {
   last_camera_position_world_.reset();
   refined_position_.reset();
   refined_position_covariance_.reset();
+  refined_views_.clear();
 }
 
 Eigen::Vector4d OrientationEstimator::mapOrientation() const {

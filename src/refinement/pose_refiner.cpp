@@ -106,6 +106,9 @@ void checkParameters(const RefinementParameters& p) {
 struct Observation {
   std::vector<RefinementView> views;
   pcl::PointCloud<pcl::PointXYZ>::Ptr world{new pcl::PointCloud<pcl::PointXYZ>};
+  // The first view's points in the fixed frame (the view starts are placed on and whose own fit
+  // gives each kept pose's covariance); all of world when the first view has none.
+  pcl::PointCloud<pcl::PointXYZ>::Ptr first{new pcl::PointCloud<pcl::PointXYZ>};
 };
 
 Observation finitePoints(const std::vector<RefinementView>& views) {
@@ -125,8 +128,10 @@ Observation finitePoints(const std::vector<RefinementView>& views) {
       q.getVector3fMap() = world_from_camera * p.getVector3fMap();
       observation.world->push_back(q);
     }
+    if (observation.views.empty()) *observation.first = *observation.world;
     observation.views.push_back({finite, view.world_from_camera});
   }
+  if (observation.first->empty()) observation.first = observation.world;
   return observation;
 }
 
@@ -472,12 +477,19 @@ RefinementResult PoseRefiner::refine(const BinghamMixture& belief, const Eigen::
   result.skip_reason = badInputReason(observation, position, views, *surface_, parameters_);
   if (result.skipped()) return result;
 
+  // Starts are placed on the first view (the one just fused): its camera saw the centroid.
   Eigen::Vector4f centroid;
-  pcl::compute3DCentroid(*observation.world, centroid);
+  pcl::compute3DCentroid(*observation.first, centroid);
   const Eigen::Vector3d observed_centroid = centroid.head<3>().cast<double>();
   const Eigen::Vector3d camera_position = observation.views.front().world_from_camera.translation();
   const pcl::PointCloud<pcl::PointXYZ>::Ptr thinned =
       voxelFiltered(observation.world, parameters_.scene_voxel);
+  // Each kept pose's covariances come from the first view's own fit: earlier views were fused
+  // with theirs already, and counting their points again would make the belief overconfident.
+  const pcl::PointCloud<pcl::PointXYZ>::Ptr thinned_first =
+      observation.views.size() == 1 || observation.first == observation.world
+          ? thinned
+          : voxelFiltered(observation.first, parameters_.scene_voxel);
   const pcl::PointCloud<pcl::PointXYZ>::Ptr screening_points =
       evenSubsample(*thinned, parameters_.screening_points);
 
@@ -526,10 +538,10 @@ RefinementResult PoseRefiner::refine(const BinghamMixture& belief, const Eigen::
     result.kept = withRollSectors(result.kept, *surface_, verifier, parameters_);
   for (RefinedPose& pose : result.kept) {
     pose.position_covariance = translationCovariance(
-        *surface_, *thinned, pose.world_from_object, parameters_.max_correspondence_distance,
+        *surface_, *thinned_first, pose.world_from_object, parameters_.max_correspondence_distance,
         parameters_.min_position_sigma, parameters_.max_position_sigma);
     pose.rotation_covariance = rotationCovariance(
-        *surface_, *thinned, pose.world_from_object, parameters_.max_correspondence_distance,
+        *surface_, *thinned_first, pose.world_from_object, parameters_.max_correspondence_distance,
         parameters_.min_rotation_sigma_deg * M_PI / 180.0,
         parameters_.max_rotation_sigma_deg * M_PI / 180.0, parameters_.min_position_sigma);
   }

@@ -68,6 +68,7 @@ ParameterTable<EstimatorRosParameters> makeTable() {
       .add("refinement_min_score", refinement(&R::min_score), numberIn(-1.0, 1.0, true))
       .add("refinement_restart_seeds", refinement(&R::restart_seeds),
            integerAtLeast(0, "0: no restarts"))
+      .add("refinement_views", core(&E::refinement_views), integerAtLeast(1, "1: this view alone"))
       .add("refinement_depth_noise_at_1m",
            fieldPath(&P::core, &E::refinement_parameters, &R::verification,
                      &VerificationParameters::depth_noise_at_1m),

@@ -188,6 +188,12 @@ void addEvaluateOptions(CLI::App& command, EvaluateOptions& options) {
       ->capture_default_str()
       ->check(CLI::Range(0.01, 100.0));
   addSetting(
+      command, options, "--refinement-views",
+      [](auto& s) -> auto& { return s.estimator.refinement_views; }, "/estimator/refinement_views",
+      "views refinement aligns together: this one and the latest fused before it")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100));
+  addSetting(
       command, options, "--belief-weight-floor",
       [](auto& s) -> auto& { return s.estimator.belief_weight_floor; },
       "/estimator/belief_weight_floor",

@@ -271,6 +271,23 @@ TEST_F(PoseRefinerTest, LeavesTheRollFreeWhereTheHandleIsHidden) {
   for (const RefinedPose& pose : without.kept) EXPECT_EQ(pose.roll_sector_deg, 0.0);
 }
 
+TEST_F(PoseRefinerTest, AnEarlierViewOfTheHandlePinsTheRollTheViewFromBehindLeavesFree) {
+  // Refined alone, the view from behind the handle leaves the roll free over a sector; aligned
+  // and verified together with an earlier view of the handle (same object pose, another camera),
+  // every turn contradicts that view and the roll is fixed.
+  const RefinementView handle = view(kHandleSideOn, 0.4);
+  const RefinementView behind = view(Eigen::Vector3d(-1.0, 0.0, 0.0), 0.0);
+  const BinghamMixture belief({1.0}, {concentratedAt(truth())});
+  const PoseRefiner refiner(*surface_);
+  const RefinementResult alone = refiner.refine(belief, position(), {behind});
+  ASSERT_FALSE(alone.kept.empty()) << describe(alone, truth());
+  EXPECT_GE(alone.kept.front().roll_sector_deg, 30.0);
+  const RefinementResult together = refiner.refine(belief, position(), {behind, handle});
+  ASSERT_FALSE(together.kept.empty()) << describe(together, truth());
+  EXPECT_EQ(together.kept.front().roll_sector_deg, 0.0);
+  EXPECT_LT(rotationErrorDeg(together.kept.front().orientation, truth()), 2.0);
+}
+
 TEST_F(PoseRefinerTest, KeepsTheRollSharpWhereTheHandleIsSeen) {
   const RefinementView v = view(kHandleSideOn, 0.4);
   const RefinementResult result = PoseRefiner(*surface_).refine(

@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <deque>
 #include <memory>
 #include <optional>
 #include <string>
@@ -67,6 +68,11 @@ struct EstimatorParameters {
     return p;
   }();
   RefinedFusionParameters refined_fusion;
+  // Views refinement aligns and verifies together: this one and the latest refinement_views - 1
+  // fused before it (their object points, voxel-filtered), in the fixed frame (>= 1). Each kept
+  // pose's covariance still comes from this view's own fit. 1: this view alone; 3 was better by
+  // some medians and worse by others at 60 % more refinement time (doc/evaluation.md).
+  int refinement_views = 1;
 };
 
 // Wall-clock time of each stage of one update [ms].
@@ -201,6 +207,8 @@ class OrientationEstimator {
   // unchanged when none is verified or the input is bad).
   void refineAfterFusion(const pcl::PointCloud<pcl::PointXYZ>& object_points,
                          const Eigen::Isometry3d& world_from_camera, ViewUpdate* result);
+  // Keeps the view (thinned) among the refinement_views - 1 latest for the next refinements.
+  void rememberRefinedView(const RefinementView& view);
   // Fixed-frame point the viewing directions are measured from: the position estimate, or the
   // tracked centroid before the first view.
   Eigen::Vector3d viewingReference() const;
@@ -219,6 +227,7 @@ class OrientationEstimator {
   std::shared_ptr<const PoseRefiner> refiner_;  // only with RefinementMode::kIcp
   std::optional<Eigen::Vector3d> refined_position_;
   std::optional<Eigen::Matrix3d> refined_position_covariance_;
+  std::deque<RefinementView> refined_views_;  // latest first, object points voxel-filtered
   // Only when selection.min_information_gain > 0.
   std::shared_ptr<const ViewUtilityScorer> gain_scorer_;
   // The MAP costs a search over every component: computed once per belief, on first request;
