@@ -16,8 +16,8 @@ export BUILD_DIR JOBS FUZZ_SECONDS
 # Debian's catkin needs Debian's python3 (a pyenv python3 lacks catkin_pkg).
 export PATH := /usr/bin:/bin:$(PATH)
 
-.PHONY: all deps deps-gui deps-sanitize build test ci fuzz test-sanitize test-tsan demo bench format \
-	clean
+.PHONY: all deps deps-gui deps-sanitize build test ci fuzz test-sanitize test-tsan demo bench \
+	format clean
 
 all: build
 

@@ -37,22 +37,31 @@ if [[ $# -gt 0 ]]; then
     if [[ -f test/ros/$name.test ]]; then rostests+=("$name"); else gtests+=("$name"); fi
   done
 fi
-targets=("${gtests[@]}")
+# vdc_test_model also for the gtests: the real-scan test of vdc_estimation_tests needs the model.
+targets=("${gtests[@]}" vdc_test_model)
 [[ ${#rostests[@]} -gt 0 ]] && targets+=("${rostest_targets[@]}")
 
-# OpenMP runs on one thread: libomp is not instrumented, so TSan does not see how it orders its
-# threads (its hand-overs are its own spin flags, not pthread calls) and reports its start-up of
-# every team as a race. OMP_THREAD_LIMIT, not only OMP_NUM_THREADS: PCL's NormalEstimationOMP
-# asks for one thread per core with num_threads(), which OMP_NUM_THREADS does not cap. The
-# threads checked are the package's own: refinement's std::threads, the estimator node's worker,
-# roscpp's callback, timer and transport threads.
-export OMP_NUM_THREADS=1 OMP_THREAD_LIMIT=1
+# OpenMP: libomp is not instrumented, so TSan alone does not see how it orders its threads (its
+# barriers and hand-overs are its own spin flags, not pthread calls) and reports the work before
+# and after every parallel region as racing. Archer, LLVM's OpenMP tool for TSan (libarcher.so,
+# in libomp-14-dev), tells TSan about OpenMP's forks, joins, barriers, reductions, critical
+# sections and tasks, so the OpenMP loops run on 2 threads and are checked too. PCL's precompiled
+# OpenMP code (built by gcc for libgomp) runs on libomp as well: libomp, linked first, provides
+# the GOMP_* entry points. Without Archer, OpenMP must run on one thread:
+#   OMP_TOOL_LIBRARIES= OMP_NUM_THREADS=1 OMP_THREAD_LIMIT=1 scripts/test_tsan.sh
+# (OMP_THREAD_LIMIT too: PCL's NormalEstimationOMP asks for one thread per core with
+# num_threads(), which OMP_NUM_THREADS does not cap.)
+export OMP_NUM_THREADS=${OMP_NUM_THREADS:-2}
+export OMP_TOOL_LIBRARIES=${OMP_TOOL_LIBRARIES-/usr/lib/llvm-14/lib/libarcher.so}
+# libomp warns at every region it cannot give the threads asked for (under OMP_THREAD_LIMIT).
+export KMP_WARNINGS=0
 # halt_on_error=0: every report of a run is printed (a binary with one still exits 66, a failure).
 # second_deadlock_stack: both stacks of a lock-order inversion. ignore_noninstrumented_modules:
 # intercepted calls (close, send, memcmp) made by uninstrumented libraries are not checked as
 # memory accesses (tsan.supp says why). Set before the build: it runs the instrumented `vdc` to
 # train the rostests' model.
-export TSAN_OPTIONS=${TSAN_OPTIONS:-halt_on_error=0:second_deadlock_stack=1:ignore_noninstrumented_modules=1:suppressions=$PWD/test/sanitizer/tsan.supp}
+default_options=halt_on_error=0:second_deadlock_stack=1:ignore_noninstrumented_modules=1
+export TSAN_OPTIONS=${TSAN_OPTIONS:-$default_options:suppressions=$PWD/test/sanitizer/tsan.supp}
 
 start=$(date +%s)
 SANITIZE=thread SANITIZE_BUILD_DIR=$build_dir scripts/sanitized_build.sh "${targets[@]}" || exit 1
