@@ -79,13 +79,14 @@ BinghamMixture::ConstPtr waitForViews(ManagerState& state, std::uint32_t views, 
 // and nodelet's broken-bond callback, on its bond thread, unloads the nodelet from the
 // half-destroyed Loader: ThreadSanitizer reported a use after free and a destroyed mutex there,
 // and the manager aborted with boost::lock_error (doc/hardening.md, "Threads (TSan)").
+// Only the nodelets loaded by then: after a failed start there may be fewer.
 class UnloadAtExit {
  public:
-  UnloadAtExit() = default;
+  explicit UnloadAtExit(nodelet::Loader& loader) : loader_(loader) {}
   UnloadAtExit(const UnloadAtExit&) = delete;
   UnloadAtExit& operator=(const UnloadAtExit&) = delete;
   ~UnloadAtExit() {
-    for (const std::string& name : kNodelets) {
+    for (const std::string& name : loader_.listLoadedNodelets()) {
       nodelet::NodeletUnload unload;
       unload.request.name = name;
       if (!ros::service::call("nodelets_closed_loop/unload_nodelet", unload) ||
@@ -94,6 +95,9 @@ class UnloadAtExit {
       }
     }
   }
+
+ private:
+  nodelet::Loader& loader_;
 };
 
 bool allLoaded(nodelet::Loader& loader) {
@@ -126,8 +130,8 @@ TEST(NodeletsClosedLoop, camera_estimator_and_server_in_one_manager_close_the_lo
   tf2_ros::TransformListener tf_listener(tf_buffer);
   ros::AsyncSpinner spinner(2);  // the Loader's services and this test's own subscriptions
   spinner.start();
-  nodelet::Loader loader;             // advertises ~load_nodelet: the launch files load into it
-  const UnloadAtExit unload_at_exit;  // destroyed before the loader
+  nodelet::Loader loader;  // advertises ~load_nodelet: the launch files load into it
+  const UnloadAtExit unload_at_exit(loader);  // destroyed before the loader
 
   const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(120.0);
   while (!allLoaded(loader) && ros::WallTime::now() < deadline) ros::WallDuration(0.1).sleep();
