@@ -5,6 +5,8 @@
 #   make fuzz           run each libFuzzer target of fuzz/ for FUZZ_SECONDS (default 60) under
 #                       ASan + UBSan (clang 14, build-asan/; doc/hardening.md)
 #   make test-sanitize  the gtest suite under ASan + UBSan (clang 14, build-asan/)
+#   make test-tsan      the threaded gtests and the node rostests under ThreadSanitizer (clang 14,
+#                       build-tsan/; not in CI: doc/hardening.md)
 #   make ci             what CI runs (.ci/run): make test, then fuzzing and the sanitizer suite
 #                       within a 38-minute budget (scripts/ci_all_stages.sh)
 BUILD_DIR ?= build
@@ -14,7 +16,8 @@ export BUILD_DIR JOBS FUZZ_SECONDS
 # Debian's catkin needs Debian's python3 (a pyenv python3 lacks catkin_pkg).
 export PATH := /usr/bin:/bin:$(PATH)
 
-.PHONY: all deps deps-gui deps-sanitize build test ci fuzz test-sanitize demo bench format clean
+.PHONY: all deps deps-gui deps-sanitize build test ci fuzz test-sanitize test-tsan demo bench \
+	format clean
 
 all: build
 
@@ -41,6 +44,9 @@ fuzz: deps-sanitize
 
 test-sanitize: deps-sanitize
 	@scripts/test_sanitize.sh
+
+test-tsan: deps-sanitize
+	@scripts/test_tsan.sh
 
 demo: build
 	@scripts/demo.sh

@@ -3,8 +3,8 @@
 # Idempotent: does nothing (and needs no network) when everything is already installed.
 # Usage: scripts/install_deps.sh [--gui] [--sanitize]
 #   --gui       rviz, Xvfb, ImageMagick and PIL: the rviz screenshot test, which `make test` runs
-#   --sanitize  clang 14 with its sanitizer and libFuzzer runtimes and LLVM's OpenMP: `make fuzz`
-#               and `make test-sanitize`
+#   --sanitize  clang 14 with its sanitizer and libFuzzer runtimes and LLVM's OpenMP: `make fuzz`,
+#               `make test-sanitize` and `make test-tsan`
 set -euo pipefail
 
 packages=(

@@ -5,6 +5,7 @@
 // ~estimate -> server -> next best view -> camera moves -> a second view fused) and, subscribed
 // beside the estimator, checks that the camera's clouds cross the manager without a copy.
 #include <gtest/gtest.h>
+#include <nodelet/NodeletUnload.h>
 #include <nodelet/loader.h>
 #include <ros/ros.h>
 #include <sensor_msgs/PointCloud2.h>
@@ -72,6 +73,33 @@ BinghamMixture::ConstPtr waitForViews(ManagerState& state, std::uint32_t views, 
   return nullptr;
 }
 
+// Unloads the nodelets through the manager's ~unload_nodelet service when the test ends (every
+// way it ends), as each `nodelet load` process does when it stops: that drops the nodelet's bond
+// to that process too. Left to ~Loader, the bonds are broken while the Loader is being destroyed,
+// and nodelet's broken-bond callback, on its bond thread, unloads the nodelet from the
+// half-destroyed Loader: ThreadSanitizer reported a use after free and a destroyed mutex there,
+// and the manager aborted with boost::lock_error (doc/hardening.md, "Threads (TSan)").
+// Only the nodelets loaded by then: after a failed start there may be fewer.
+class UnloadAtExit {
+ public:
+  explicit UnloadAtExit(nodelet::Loader& loader) : loader_(loader) {}
+  UnloadAtExit(const UnloadAtExit&) = delete;
+  UnloadAtExit& operator=(const UnloadAtExit&) = delete;
+  ~UnloadAtExit() {
+    for (const std::string& name : loader_.listLoadedNodelets()) {
+      nodelet::NodeletUnload unload;
+      unload.request.name = name;
+      if (!ros::service::call("nodelets_closed_loop/unload_nodelet", unload) ||
+          !unload.response.success) {
+        ADD_FAILURE() << "could not unload " << name << " through ~unload_nodelet";
+      }
+    }
+  }
+
+ private:
+  nodelet::Loader& loader_;
+};
+
 bool allLoaded(nodelet::Loader& loader) {
   const std::vector<std::string> loaded = loader.listLoadedNodelets();
   return std::all_of(kNodelets.begin(), kNodelets.end(), [&](const std::string& name) {
@@ -103,6 +131,7 @@ TEST(NodeletsClosedLoop, camera_estimator_and_server_in_one_manager_close_the_lo
   ros::AsyncSpinner spinner(2);  // the Loader's services and this test's own subscriptions
   spinner.start();
   nodelet::Loader loader;  // advertises ~load_nodelet: the launch files load into it
+  const UnloadAtExit unload_at_exit(loader);  // destroyed before the loader
 
   const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(120.0);
   while (!allLoaded(loader) && ros::WallTime::now() < deadline) ros::WallDuration(0.1).sleep();
