@@ -7,6 +7,8 @@
 #   scripts/test_sanitize.sh [binary...]   (default: every binary of $tests below)
 set -uo pipefail
 cd "$(dirname "$0")/.."
+# shellcheck source=scripts/sanitizer_results.sh
+source scripts/sanitizer_results.sh
 build_dir=${SANITIZE_BUILD_DIR:-build-asan}
 export PATH=/usr/bin:/bin:$PATH
 
@@ -29,20 +31,13 @@ export ASAN_OPTIONS=${ASAN_OPTIONS:-halt_on_error=1:detect_leaks=1}
 export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$PWD/test/sanitizer/lsan.supp:print_suppressions=0}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}
 results="$build_dir/test_results_sanitize"
-# A result file with one failed case, for a binary that wrote none (not built, or stopped by a
-# sanitizer report before gtest wrote its results).
-record_failure() {
-  echo "<testsuites><testsuite><testcase classname=\"$1\" name=\"$2\"><failure/></testcase>" \
-    "</testsuite></testsuites>" > "$results/$1.$2.xml"
-}
 rm -rf "$results"
 mkdir -p "$results"
 for name in "${tests[@]}"; do
-  binary=$(find "$build_dir/devel/lib" "$build_dir" -maxdepth 4 -type f -name "$name" -perm -u+x \
-    | head -1)
+  binary=$(find_test_binary "$build_dir" "$name")
   if [[ -z "$binary" ]]; then
     echo "sanitizers: $name was not built"
-    record_failure "$name" built
+    record_failure "$results" "$name" built
     continue
   fi
   start=$(date +%s)
@@ -52,7 +47,7 @@ for name in "${tests[@]}"; do
   if [[ $status -ne 0 ]]; then
     grep -E -A40 '^==[0-9]+==ERROR|runtime error|^\[  FAILED' "$results/$name.log" | head -60
     if ! grep -q '<failure' "$results/$name.xml" 2>/dev/null; then
-      record_failure "$name" sanitizer_report_or_crash
+      record_failure "$results" "$name" sanitizer_report_or_crash
     fi
   fi
 done

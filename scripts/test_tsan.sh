@@ -14,6 +14,8 @@
 #   scripts/test_tsan.sh [--gtests-only] [binary-or-rostest...]
 set -uo pipefail
 cd "$(dirname "$0")/.."
+# shellcheck source=scripts/sanitizer_results.sh
+source scripts/sanitizer_results.sh
 build_dir=${TSAN_BUILD_DIR:-build-tsan}
 export PATH=/usr/bin:/bin:$PATH
 export ROS_HOSTNAME=${ROS_HOSTNAME:-localhost}
@@ -67,20 +69,14 @@ start=$(date +%s)
 SANITIZE=thread SANITIZE_BUILD_DIR=$build_dir scripts/sanitized_build.sh "${targets[@]}" || exit 1
 echo "tsan: build in $(( $(date +%s) - start )) s"
 results="$build_dir/test_results_tsan"
-# A result file with one failed case, for a binary that wrote none or a TSan report.
-record_failure() {
-  echo "<testsuites><testsuite><testcase classname=\"$1\" name=\"$2\"><failure/></testcase>" \
-    "</testsuite></testsuites>" > "$results/$1.$2.xml"
-}
 rm -rf "$results"
 mkdir -p "$results"
 
 for name in "${gtests[@]}"; do
-  binary=$(find "$build_dir/devel/lib" "$build_dir" -maxdepth 4 -type f -name "$name" -perm -u+x \
-    | head -1)
+  binary=$(find_test_binary "$build_dir" "$name")
   if [[ -z "$binary" ]]; then
     echo "tsan: $name was not built"
-    record_failure "$name" built
+    record_failure "$results" "$name" built
     continue
   fi
   start=$(date +%s)
@@ -89,10 +85,10 @@ for name in "${gtests[@]}"; do
   echo "tsan: $name exit $status in $(( $(date +%s) - start )) s"
   if grep -q '^WARNING: ThreadSanitizer' "$results/$name.log"; then
     grep -E -A30 '^WARNING: ThreadSanitizer' "$results/$name.log" | head -80
-    record_failure "$name" tsan_report
+    record_failure "$results" "$name" tsan_report
   elif [[ $status -ne 0 ]] && ! grep -q '<failure' "$results/$name.xml" 2>/dev/null; then
     tail -20 "$results/$name.log"
-    record_failure "$name" exit_status
+    record_failure "$results" "$name" exit_status
   fi
 done
 
@@ -121,11 +117,11 @@ if [[ ${#rostests[@]} -gt 0 ]]; then
         echo "tsan: $name: $(grep -c '^WARNING: ThreadSanitizer' "$report") report(s) in $report"
         grep -E -A30 '^WARNING: ThreadSanitizer' "$report" | head -60
       done
-      record_failure "$name" tsan_report
+      record_failure "$results" "$name" tsan_report
     fi
     if [[ $status -ne 0 ]] && ! find "$results/$name" -name '*.xml' | grep -q .; then
       tail -20 "$results/$name.log"
-      record_failure "$name" exit_status
+      record_failure "$results" "$name" exit_status
     fi
   done
 fi
