@@ -1,7 +1,5 @@
 #include "view_direction_classification/estimation/orientation_estimator.h"
 
-#include <pcl/filters/voxel_grid.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -323,13 +321,7 @@ void OrientationEstimator::rememberRefinedView(const RefinementView& view) {
     refined_views_.clear();
     return;
   }
-  pcl::VoxelGrid<pcl::PointXYZ> grid;
-  grid.setInputCloud(view.points);
-  const auto leaf = static_cast<float>(parameters_.refinement_parameters.scene_voxel);
-  grid.setLeafSize(leaf, leaf, leaf);
-  auto thinned = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
-  grid.filter(*thinned);
-  refined_views_.push_front({thinned, view.world_from_camera});
+  refined_views_.push_front(thinnedView(view, parameters_.refinement_parameters.scene_voxel));
   while (static_cast<int>(refined_views_.size()) > keep) refined_views_.pop_back();
 }
 

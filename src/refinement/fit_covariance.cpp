@@ -56,14 +56,9 @@ Eigen::Matrix3d clampedCovariance(const Eigen::Matrix3d& information, double min
   return solver.eigenvectors() * variances.asDiagonal() * solver.eigenvectors().transpose();
 }
 
-}  // namespace
-
-Eigen::Matrix3d translationCovariance(const ModelSurface& surface,
-                                      const pcl::PointCloud<pcl::PointXYZ>& points_world,
-                                      const Eigen::Isometry3d& world_from_object,
-                                      double max_distance, double min_sigma, double max_sigma) {
-  const Matches matches = matchesOf(surface, points_world, world_from_object, max_distance);
-  if (matches.count() < 7) return max_sigma * max_sigma * Eigen::Matrix3d::Identity();
+// The translation's covariance [m^2, fixed frame] from the matches.
+Eigen::Matrix3d translationFrom(const Matches& matches, const Eigen::Isometry3d& world_from_object,
+                                double min_sigma, double max_sigma) {
   Eigen::Matrix3d information = Eigen::Matrix3d::Zero();  // sum n n^T, object frame
   for (const Eigen::Vector3d& n : matches.normals) information += n * n.transpose();
   const Eigen::Matrix3d object_frame = clampedCovariance(
@@ -72,12 +67,9 @@ Eigen::Matrix3d translationCovariance(const ModelSurface& surface,
   return rotation * object_frame * rotation.transpose();
 }
 
-Eigen::Matrix3d rotationCovariance(const ModelSurface& surface,
-                                   const pcl::PointCloud<pcl::PointXYZ>& points_world,
-                                   const Eigen::Isometry3d& world_from_object, double max_distance,
-                                   double min_sigma, double max_sigma, double min_shift_sigma) {
-  const Matches matches = matchesOf(surface, points_world, world_from_object, max_distance);
-  if (matches.count() < 7) return max_sigma * max_sigma * Eigen::Matrix3d::Identity();
+// The turn's covariance [rad^2, object frame] from the matches.
+Eigen::Matrix3d rotationFrom(const Matches& matches, double min_sigma, double max_sigma,
+                             double min_shift_sigma) {
   // Gauss-Newton information of (turn, shift): each match's residual changes by
   // -(x - c) x n . turn + n . shift. About the matches' centroid c the two blocks decouple
   // better; the turn's marginal does not depend on c.
@@ -106,6 +98,22 @@ Eigen::Matrix3d rotationCovariance(const ModelSurface& surface,
   const double floor = std::min(max_sigma, std::max(min_sigma, min_shift_sigma / lever));
   return clampedCovariance(turn_information / std::max(matches.residualVariance(), 1e-300), floor,
                            max_sigma);
+}
+
+}  // namespace
+
+FitCovariance fitCovariance(const ModelSurface& surface,
+                            const pcl::PointCloud<pcl::PointXYZ>& points_world,
+                            const Eigen::Isometry3d& world_from_object, double max_distance,
+                            const CovarianceBounds& bounds) {
+  const Matches matches = matchesOf(surface, points_world, world_from_object, max_distance);
+  if (matches.count() < 7) {
+    return {bounds.max_shift_sigma * bounds.max_shift_sigma * Eigen::Matrix3d::Identity(),
+            bounds.max_turn_sigma * bounds.max_turn_sigma * Eigen::Matrix3d::Identity()};
+  }
+  return {
+      translationFrom(matches, world_from_object, bounds.min_shift_sigma, bounds.max_shift_sigma),
+      rotationFrom(matches, bounds.min_turn_sigma, bounds.max_turn_sigma, bounds.min_shift_sigma)};
 }
 
 }  // namespace vdc

@@ -52,19 +52,19 @@ void checkParameters(const RefinementParameters& p) {
   checkPositive(p.duplicate_angle_deg, "duplicate_angle_deg");
   checkPositive(p.duplicate_distance, "duplicate_distance");
   checkPositive(p.min_position_sigma, "min_position_sigma");
-  checkPositive(p.min_rotation_sigma_deg, "min_rotation_sigma_deg");
-  checkPositive(p.max_rotation_sigma_deg, "max_rotation_sigma_deg");
-  checkPositive(p.polish_correspondence_distance, "polish_correspondence_distance");
-  if (p.max_rotation_sigma_deg < p.min_rotation_sigma_deg) {
-    throw Error("refinement's max_rotation_sigma_deg must not be below min_rotation_sigma_deg");
-  }
-  if (p.polish_iterations < 0) {
-    throw Error("refinement's polish_iterations must be >= 0, got " +
-                std::to_string(p.polish_iterations));
-  }
   checkPositive(p.max_position_sigma, "max_position_sigma");
   if (p.max_position_sigma < p.min_position_sigma) {
     throw Error("refinement's max_position_sigma must not be below min_position_sigma");
+  }
+  checkPositive(p.min_rotation_sigma_deg, "min_rotation_sigma_deg");
+  checkPositive(p.max_rotation_sigma_deg, "max_rotation_sigma_deg");
+  if (p.max_rotation_sigma_deg < p.min_rotation_sigma_deg) {
+    throw Error("refinement's max_rotation_sigma_deg must not be below min_rotation_sigma_deg");
+  }
+  checkPositive(p.polish_correspondence_distance, "polish_correspondence_distance");
+  if (p.polish_iterations < 0) {
+    throw Error("refinement's polish_iterations must be >= 0, got " +
+                std::to_string(p.polish_iterations));
   }
   if (p.min_points < 3) {
     throw Error("refinement's min_points must be at least 3, got " + std::to_string(p.min_points));
@@ -107,8 +107,8 @@ struct Observation {
   std::vector<RefinementView> views;
   pcl::PointCloud<pcl::PointXYZ>::Ptr world{new pcl::PointCloud<pcl::PointXYZ>};
   // The first view's points in the fixed frame (the view starts are placed on and whose own fit
-  // gives each kept pose's covariance); all of world when the first view has none.
-  pcl::PointCloud<pcl::PointXYZ>::Ptr first{new pcl::PointCloud<pcl::PointXYZ>};
+  // gives each kept pose's covariance): world itself for one view, or when the first has none.
+  pcl::PointCloud<pcl::PointXYZ>::Ptr first;
 };
 
 Observation finitePoints(const std::vector<RefinementView>& views) {
@@ -128,10 +128,18 @@ Observation finitePoints(const std::vector<RefinementView>& views) {
       q.getVector3fMap() = world_from_camera * p.getVector3fMap();
       observation.world->push_back(q);
     }
-    if (observation.views.empty()) *observation.first = *observation.world;
     observation.views.push_back({finite, view.world_from_camera});
   }
-  if (observation.first->empty()) observation.first = observation.world;
+  const std::size_t first_count =
+      observation.views.empty() ? 0 : observation.views[0].points->size();
+  observation.first = observation.world;
+  if (first_count > 0 && first_count < observation.world->size()) {
+    observation.first.reset(new pcl::PointCloud<pcl::PointXYZ>);
+    observation.first->points.assign(observation.world->begin(),
+                                     observation.world->begin() + first_count);
+    observation.first->width = static_cast<std::uint32_t>(first_count);
+    observation.first->height = 1;
+  }
   return observation;
 }
 
@@ -178,7 +186,7 @@ std::vector<RefinementView> thinnedViews(const std::vector<RefinementView>& view
   std::vector<RefinementView> thinned;
   for (const RefinementView& view : views) {
     if (view.points->empty()) continue;
-    thinned.push_back({voxelFiltered(view.points, voxel), view.world_from_camera});
+    thinned.push_back(thinnedView(view, voxel));
   }
   return thinned;
 }
@@ -456,6 +464,10 @@ void restartFrom(std::size_t seed_index, const ModelSurface& surface, const Alig
 
 }  // namespace
 
+RefinementView thinnedView(const RefinementView& view, double voxel) {
+  return {voxelFiltered(view.points, voxel), view.world_from_camera};
+}
+
 PoseRefiner::PoseRefiner(std::shared_ptr<const ModelSurface> surface,
                          RefinementParameters parameters)
     : surface_(std::move(surface)), parameters_(parameters) {
@@ -487,7 +499,7 @@ RefinementResult PoseRefiner::refine(const BinghamMixture& belief, const Eigen::
   // Each kept pose's covariances come from the first view's own fit: earlier views were fused
   // with theirs already, and counting their points again would make the belief overconfident.
   const pcl::PointCloud<pcl::PointXYZ>::Ptr thinned_first =
-      observation.views.size() == 1 || observation.first == observation.world
+      observation.first == observation.world
           ? thinned
           : voxelFiltered(observation.first, parameters_.scene_voxel);
   const pcl::PointCloud<pcl::PointXYZ>::Ptr screening_points =
@@ -536,14 +548,15 @@ RefinementResult PoseRefiner::refine(const BinghamMixture& belief, const Eigen::
   }
   if (parameters_.roll_sectors)
     result.kept = withRollSectors(result.kept, *surface_, verifier, parameters_);
+  const CovarianceBounds bounds{parameters_.min_position_sigma, parameters_.max_position_sigma,
+                                parameters_.min_rotation_sigma_deg * M_PI / 180.0,
+                                parameters_.max_rotation_sigma_deg * M_PI / 180.0};
   for (RefinedPose& pose : result.kept) {
-    pose.position_covariance = translationCovariance(
-        *surface_, *thinned_first, pose.world_from_object, parameters_.max_correspondence_distance,
-        parameters_.min_position_sigma, parameters_.max_position_sigma);
-    pose.rotation_covariance = rotationCovariance(
-        *surface_, *thinned_first, pose.world_from_object, parameters_.max_correspondence_distance,
-        parameters_.min_rotation_sigma_deg * M_PI / 180.0,
-        parameters_.max_rotation_sigma_deg * M_PI / 180.0, parameters_.min_position_sigma);
+    const FitCovariance covariance =
+        fitCovariance(*surface_, *thinned_first, pose.world_from_object,
+                      parameters_.max_correspondence_distance, bounds);
+    pose.position_covariance = covariance.translation;
+    pose.rotation_covariance = covariance.rotation;
   }
   result.milliseconds =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_time)

@@ -42,11 +42,13 @@ PoseVerifier::PoseVerifier(std::shared_ptr<const ModelSurface> surface,
     auto indexed = std::make_unique<IndexedView>();
     indexed->points = view.points;
     std::vector<Eigen::Vector3f> rays;
+    std::vector<Eigen::Vector2f> flat;  // the same rays in the image plane, for the footprint
     rays.reserve(view.points->size());
-    for (const auto& p : view.points->points) rays.emplace_back(p.x / p.z, p.y / p.z, 0.0f);
-    std::vector<Eigen::Vector2f> flat;
-    flat.reserve(rays.size());
-    for (const Eigen::Vector3f& ray : rays) flat.push_back(ray.head<2>());
+    flat.reserve(view.points->size());
+    for (const auto& p : view.points->points) {
+      flat.emplace_back(p.x / p.z, p.y / p.z);
+      rays.emplace_back(flat.back().x(), flat.back().y(), 0.0f);
+    }
     indexed->footprint = convexHull(std::move(flat));
     indexed->rays = std::make_unique<const NearestPoints>(std::move(rays));
     indexed->camera_from_world = view.world_from_camera.inverse();
