@@ -10,6 +10,7 @@
 #include <functional>
 #include <memory>
 #include <numeric>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <unordered_map>
@@ -49,6 +50,8 @@ void checkParameters(const RefinementParameters& p) {
   checkPositive(p.convergence_translation, "convergence_translation");
   checkPositive(p.convergence_rotation_deg, "convergence_rotation_deg");
   checkPositive(p.max_log_density_drop, "max_log_density_drop");
+  checkPositive(p.restart_max_log_density_drop, "restart_max_log_density_drop");
+  checkPositive(p.restart_score_margin, "restart_score_margin");
   checkPositive(p.duplicate_angle_deg, "duplicate_angle_deg");
   checkPositive(p.duplicate_distance, "duplicate_distance");
   checkPositive(p.min_position_sigma, "min_position_sigma");
@@ -380,14 +383,21 @@ struct Aligner {
   // Aligns *pose from its start (whose start_score is set) with worker's ICP and verifies the
   // result.
   void alignAndVerify(int worker, const Eigen::Vector4d& reference, RefinedPose* pose) const {
+    record(icps[worker]->align(pose->start.inverse()), std::nullopt, reference, pose);
+  }
+
+  // Sets *pose from ICP's outcome and verifies it (unless its score is known) and judges it.
+  void record(const IcpOutcome& outcome, const std::optional<VerificationScore>& known_score,
+              const Eigen::Vector4d& reference, RefinedPose* pose) const {
     pose->screened_in = true;
-    const IcpOutcome outcome = icps[worker]->align(pose->start.inverse());
     pose->converged = outcome.converged;
     pose->world_from_object = outcome.converged ? outcome.object_from_world.inverse() : pose->start;
     pose->orientation = orientationOf(pose->world_from_object);
     pose->fitness = outcome.fitness;
     pose->icp_iterations = outcome.iterations;
-    if (outcome.converged) pose->score = verifier->score(pose->world_from_object);
+    if (outcome.converged) {
+      pose->score = known_score ? *known_score : verifier->score(pose->world_from_object);
+    }
     pose->rejection = rejection(*pose, outcome, *belief, reference, *parameters);
     pose->accepted = pose->rejection.empty();
   }
@@ -424,18 +434,23 @@ std::vector<std::size_t> restartSeeds(const std::vector<RefinedPose>& tried, int
   return seeds;
 }
 
-// The seed turned about the model's symmetry axes (turned_starts.h), each turn screened by a short
-// ICP and verified; the restart_refined best aligned in full and verified. Appended to *tried.
-void restartFrom(std::size_t seed_index, const ModelSurface& surface, const Aligner& aligner,
-                 std::vector<RefinedPose>* tried) {
-  const RefinedPose seed = (*tried)[seed_index];
-  const RefinementParameters& parameters = *aligner.parameters;
+// The seed's turns about the model's symmetry axes (turned_starts.h) that the belief still allows:
+// a turn it finds more than restart_max_log_density_drop less likely than the seed's start could
+// only be accepted if ICP carried it back into the credible region, i.e. onto the seed again. On a
+// first view the belief's girdles allow every turn; once verified poses have made it sharp (from
+// about the third view) none, and the restart costs nothing.
+std::vector<RefinedPose> allowedTurns(const RefinedPose& seed, std::size_t seed_index,
+                                      const ModelSurface& surface, const BinghamMixture& belief,
+                                      const RefinementParameters& parameters) {
+  const double least_log_density =
+      belief.logDensity(seed.start_orientation) - parameters.restart_max_log_density_drop;
   std::vector<RefinedPose> turned;
   for (const Eigen::Isometry3d& start :
        turnedStarts(surface, seed.world_from_object, parameters.restart_step_deg)) {
     RefinedPose pose;
     pose.start = pose.world_from_object = start;
     pose.start_orientation = pose.orientation = orientationOf(start);
+    if (belief.logDensity(pose.start_orientation) < least_log_density) continue;
     pose.component = seed.component;
     pose.restarted_from = static_cast<int>(seed_index);
     pose.rejection = "screened out: after " +
@@ -444,21 +459,58 @@ void restartFrom(std::size_t seed_index, const ModelSurface& surface, const Alig
                      std::to_string(parameters.restart_refined) + " best turns";
     turned.push_back(pose);
   }
-  std::vector<double> screening_scores(turned.size());
+  return turned;
+}
+
+// The seed turned about the model's symmetry axes where the belief allows it, each turn screened
+// by a short ICP and verified; the restart_refined best continue from there to the end of a full
+// ICP (the same iterations as one from the turn) and are judged like any start. Appended to
+// *tried.
+void restartFrom(std::size_t seed_index, const ModelSurface& surface, const Aligner& aligner,
+                 std::vector<RefinedPose>* tried) {
+  const RefinedPose seed = (*tried)[seed_index];
+  const RefinementParameters& parameters = *aligner.parameters;
+  std::vector<RefinedPose> turned =
+      allowedTurns(seed, seed_index, surface, *aligner.belief, parameters);
+  std::vector<IcpOutcome> screened(turned.size());
+  std::vector<VerificationScore> screening_scores(turned.size());
   parallelFor(turned.size(), aligner.workers(), [&](int worker, std::size_t i) {
-    const IcpOutcome shortly = aligner.icps[worker]->align(turned[i].start.inverse(),
-                                                           parameters.restart_screening_iterations);
-    screening_scores[i] =
-        shortly.degenerate ? -1.0
-                           : aligner.verifier->score(shortly.object_from_world.inverse()).score();
+    screened[i] = aligner.icps[worker]->align(turned[i].start.inverse(),
+                                              parameters.restart_screening_iterations);
+    if (!screened[i].degenerate) {
+      screening_scores[i] = aligner.verifier->score(screened[i].object_from_world.inverse());
+    }
   });
+  const auto screening_score = [&](std::size_t i) {
+    return screened[i].degenerate ? -1.0 : screening_scores[i].score();
+  };
   std::vector<std::size_t> order(turned.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return screening_scores[a] > screening_scores[b];
+    return screening_score(a) > screening_score(b);
   });
   order.resize(std::min(order.size(), static_cast<std::size_t>(parameters.restart_refined)));
-  aligner.alignAll(order, &turned, [&](const RefinedPose&) { return seed.start_orientation; });
+  // A turn still verifying restart_score_margin below its seed after the short ICP fits the body
+  // another way, not the seed's handle turned right: ICP crawls on from there (91 iterations on
+  // the benchmark's first view) to a pose the belief refuses.
+  const double least_score = seed.score.score() - parameters.restart_score_margin;
+  order.erase(std::remove_if(order.begin(), order.end(),
+                             [&](std::size_t i) { return screening_score(i) < least_score; }),
+              order.end());
+  parallelFor(order.size(), aligner.workers(), [&](int worker, std::size_t k) {
+    const std::size_t i = order[k];
+    RefinedPose& pose = turned[i];
+    pose.start_score = aligner.verifier->score(pose.start);
+    const IcpOutcome& first = screened[i];
+    if (first.converged || first.degenerate) {
+      aligner.record(first, screening_scores[i], seed.start_orientation, &pose);
+      return;
+    }
+    IcpOutcome rest = aligner.icps[worker]->align(first.object_from_world,
+                                                  parameters.max_iterations - first.iterations);
+    rest.iterations += first.iterations;
+    aligner.record(rest, std::nullopt, seed.start_orientation, &pose);
+  });
   tried->insert(tried->end(), turned.begin(), turned.end());
 }
 

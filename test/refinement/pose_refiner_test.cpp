@@ -403,6 +403,35 @@ TEST_F(PoseRefinerTest, RestartsTurnTheHandleFromAWrongTurnAboutTheMugsAxis) {
       << describe(alone, truth());
 }
 
+TEST_F(PoseRefinerTest, RestartsOnlyTheTurnsTheBeliefAllows) {
+  // Once verified views have made the belief sharp, a turn of the seed 30 degrees or more away
+  // could only be accepted back on the seed: none is tried. A broad belief allows all 13 turns,
+  // and a second sharp mode the one turn that lands on it.
+  const RefinementView v = view(kHandleSideOn, 1.0);
+  const auto restarts = [](const RefinementResult& result) {
+    return std::count_if(result.tried.begin(), result.tried.end(),
+                         [](const RefinedPose& pose) { return pose.restarted_from >= 0; });
+  };
+  const PoseRefiner refiner(*surface_);
+  const RefinementResult sharp =
+      refiner.refine(BinghamMixture({1.0}, {concentratedAt(truth(), 4000.0)}), position(), {v});
+  EXPECT_EQ(restarts(sharp), 0) << describe(sharp, truth());
+  ASSERT_FALSE(sharp.kept.empty()) << describe(sharp, truth());
+  EXPECT_LT(rotationErrorDeg(sharp.kept.front().orientation, truth()), 2.0);
+
+  const RefinementResult broad =
+      refiner.refine(BinghamMixture({1.0}, {concentratedAt(truth(), 20.0)}), position(), {v});
+  EXPECT_EQ(restarts(broad), 13) << describe(broad, truth());
+
+  const Eigen::Vector3d axis = world_from_object_.linear().col(2);
+  const Eigen::Vector4d turned =
+      quaternionMultiply(quaternionFromAxisAngle(axis, 2.0 * M_PI / 3.0), truth());
+  const RefinementResult two_modes = refiner.refine(
+      BinghamMixture({0.5, 0.5}, {concentratedAt(truth(), 4000.0), concentratedAt(turned, 4000.0)}),
+      position(), {v});
+  EXPECT_EQ(restarts(two_modes), 1) << describe(two_modes, truth());
+}
+
 TEST_F(PoseRefinerTest, SymmetryAxisOfTheMugIsItsBodysAxis) {
   // The built-in mug's body is a surface of revolution about z; its handle must not tilt the axis
   // refinement turns about (the samples' principal axes are tilted 10 degrees by it).
@@ -466,6 +495,9 @@ TEST_F(PoseRefinerTest, RefusesInvalidParameters) {
   EXPECT_THROW(PoseRefiner(*surface_, parameters), Error);
   parameters = {};
   parameters.restart_screening_iterations = 0;
+  EXPECT_THROW(PoseRefiner(*surface_, parameters), Error);
+  parameters = {};
+  parameters.restart_max_log_density_drop = 0.0;
   EXPECT_THROW(PoseRefiner(*surface_, parameters), Error);
   parameters = {};
   parameters.verification.depth_noise_at_1m = -0.001;

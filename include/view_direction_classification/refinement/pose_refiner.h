@@ -57,11 +57,18 @@ struct RefinementParameters {
   // half a turn about its other two axes; each turned pose is aligned by a short ICP of
   // restart_screening_iterations and verified (as it stands the body's misfit hides the handle),
   // and the restart_refined best of each seed aligned in full and verified like any start
-  // (restart_seeds 0: no restarts).
+  // (restart_seeds 0: no restarts). A turn the belief finds more than
+  // restart_max_log_density_drop less likely than its seed's start is not tried: it could only
+  // be accepted back on the seed (ln 1e30 by default: every turn of a first view's girdles is
+  // tried, none once verified poses have made the belief sharp). Of the restart_refined best
+  // turns, one still verifying more than restart_score_margin below its seed after the short ICP
+  // is not aligned further.
   int restart_seeds = 1;
   double restart_step_deg = 30.0;
   int restart_screening_iterations = 10;
   int restart_refined = 2;
+  double restart_max_log_density_drop = 69.0;
+  double restart_score_margin = 0.1;
   // Threads that align starts (each ICP is independent; the result does not depend on them).
   int threads = 2;
   // Accepted poses scoring within keep_score_margin of the best are kept; poses within
