@@ -129,10 +129,8 @@ IcpAlignment::IcpAlignment(std::shared_ptr<const ModelSurface> surface,
   // target's normals, which the model has exactly (the mesh's), so the scene needs none.
   icp.setInputSource(observed_world);
   icp.setInputTarget(surface->cloud());
-  // One k-d tree of the model for every start (PCL would rebuild it on each align()).
-  pcl::search::KdTree<pcl::PointNormal>::Ptr tree(new pcl::search::KdTree<pcl::PointNormal>);
-  tree->setInputCloud(surface->cloud());
-  icp.setSearchMethodTarget(tree, true);
+  // The model's one k-d tree for every start and alignment (PCL would rebuild it on each align()).
+  icp.setSearchMethodTarget(surface->searchTree(), true);
   icp.setTransformationEstimation(registration_->step);
   icp.setCorrespondenceEstimation(pcl::make_shared<BatchedCorrespondences>(surface));
   registration_->surface = surface;

@@ -65,6 +65,12 @@ void checkParameters(const RefinementParameters& p) {
     throw Error("refinement's max_rotation_sigma_deg must not be below min_rotation_sigma_deg");
   }
   checkPositive(p.polish_correspondence_distance, "polish_correspondence_distance");
+  checkPositive(p.polish_model_spacing, "polish_model_spacing");
+  checkPositive(p.polish_scene_voxel, "polish_scene_voxel");
+  if (!(p.polish_score_tolerance >= 0.0) || !std::isfinite(p.polish_score_tolerance)) {
+    throw Error("refinement's polish_score_tolerance must be >= 0 and finite, got " +
+                std::to_string(p.polish_score_tolerance));
+  }
   if (p.polish_iterations < 0) {
     throw Error("refinement's polish_iterations must be >= 0, got " +
                 std::to_string(p.polish_iterations));
@@ -344,9 +350,10 @@ std::vector<RefinedPose> withRollSectors(const std::vector<RefinedPose>& kept,
   return distinct;
 }
 
-// Each kept pose aligned once more, on every voxel-filtered point with tighter correspondences:
-// the starts' ICP runs on a few hundred points and settles within half a millimetre and a
-// degree, which leaves a floor of a few tenths of a degree (doc/method.md, "Refinement").
+// Each kept pose aligned once more, on every observed point (voxel-filtered to
+// polish_scene_voxel) against the finer polish surface, with tighter correspondences: the starts'
+// ICP runs on a few hundred points against 4 mm samples and settles within half a millimetre and
+// a degree, which leaves a floor of a few tenths of a degree (doc/method.md, "Refinement").
 void polishKept(const std::shared_ptr<const ModelSurface>& surface,
                 const pcl::PointCloud<pcl::PointXYZ>& thinned, const PoseVerifier& verifier,
                 const RefinementParameters& parameters, std::vector<RefinedPose>* kept) {
@@ -364,7 +371,8 @@ void polishKept(const std::shared_ptr<const ModelSurface>& surface,
     polished.world_from_object = outcome.object_from_world.inverse();
     polished.orientation = orientationOf(polished.world_from_object);
     polished.score = verifier.score(polished.world_from_object);
-    if (sameAs(polished, pose, parameters) && polished.score.score() >= pose.score.score()) {
+    if (sameAs(polished, pose, parameters) &&
+        polished.score.score() >= pose.score.score() - parameters.polish_score_tolerance) {
       pose = polished;
     }
   }
@@ -522,7 +530,7 @@ RefinementView thinnedView(const RefinementView& view, double voxel) {
 
 PoseRefiner::PoseRefiner(std::shared_ptr<const ModelSurface> surface,
                          RefinementParameters parameters)
-    : surface_(std::move(surface)), parameters_(parameters) {
+    : surface_(std::move(surface)), polish_surface_(surface_), parameters_(parameters) {
   if (!surface_) throw Error("the pose refiner needs a model surface");
   checkParameters(parameters_);
 }
@@ -531,7 +539,13 @@ PoseRefiner::PoseRefiner(const ModelBundle& model, RefinementParameters paramete
     : PoseRefiner(std::make_shared<const ModelSurface>(
                       model.surface_points, model.surface_normals, model.bounds,
                       model.parameters.surface_spacing, parameters.model_spacing),
-                  parameters) {}
+                  parameters) {
+  // The bundle's samples at polish_model_spacing (its own spacing, 2 mm by default, when that is
+  // coarser): the polish's target.
+  polish_surface_ = std::make_shared<const ModelSurface>(
+      model.surface_points, model.surface_normals, model.bounds, model.parameters.surface_spacing,
+      parameters_.polish_model_spacing);
+}
 
 RefinementResult PoseRefiner::refine(const BinghamMixture& belief, const Eigen::Vector3d& position,
                                      const std::vector<RefinementView>& views) const {
@@ -596,7 +610,11 @@ RefinementResult PoseRefiner::refine(const BinghamMixture& belief, const Eigen::
   }
   result.kept = keptPoses(result.tried, parameters_);
   if (parameters_.polish_iterations > 0) {
-    polishKept(surface_, *thinned, verifier, parameters_, &result.kept);
+    const pcl::PointCloud<pcl::PointXYZ>::Ptr polish_points =
+        parameters_.polish_scene_voxel == parameters_.scene_voxel
+            ? thinned
+            : voxelFiltered(observation.world, parameters_.polish_scene_voxel);
+    polishKept(polish_surface_, *polish_points, verifier, parameters_, &result.kept);
   }
   if (parameters_.roll_sectors)
     result.kept = withRollSectors(result.kept, *surface_, verifier, parameters_);

@@ -202,13 +202,16 @@ TEST_F(PoseRefinerTest, AKeptPoseCarriesItsFitsRotationCovarianceFlooredByItsSpr
       quaternionMultiply(quaternionConjugate(pose.orientation), truth());
   const Eigen::Vector3d turn = 2.0 * relative.tail<3>() * (relative(0) < 0 ? -1.0 : 1.0);
   EXPECT_LT(turn.dot(covariance.inverse() * turn), 9.0) << turn.transpose() * 180 / M_PI;
-  // Polishing on every point never makes a kept pose verify worse than the starts' ICP left it.
+  // Polishing on every point never makes a kept pose verify more than polish_score_tolerance
+  // worse than the starts' ICP left it, nor moves it off that pose.
   RefinementParameters unpolished;
   unpolished.polish_iterations = 0;
   const RefinementResult rough =
       PoseRefiner(*surface_, unpolished).refine(girdleBelief(kHandleSideOn, v), position(), {v});
   ASSERT_FALSE(rough.kept.empty());
-  EXPECT_GE(pose.score.score(), rough.kept[0].score.score());
+  EXPECT_GE(pose.score.score(), rough.kept[0].score.score() - defaults.polish_score_tolerance);
+  EXPECT_LT(rotationErrorDeg(pose.orientation, rough.kept[0].orientation),
+            defaults.duplicate_angle_deg);
 }
 
 TEST_F(PoseRefinerTest, VerificationRejectsTheMirroredHandle) {
@@ -510,6 +513,12 @@ TEST_F(PoseRefinerTest, RefusesInvalidParameters) {
   EXPECT_THROW(PoseRefiner(*surface_, parameters), Error);
   parameters = {};
   parameters.polish_iterations = -1;
+  EXPECT_THROW(PoseRefiner(*surface_, parameters), Error);
+  parameters = {};
+  parameters.polish_scene_voxel = 0.0;
+  EXPECT_THROW(PoseRefiner(*surface_, parameters), Error);
+  parameters = {};
+  parameters.polish_score_tolerance = -0.01;
   EXPECT_THROW(PoseRefiner(*surface_, parameters), Error);
 }
 

@@ -94,12 +94,19 @@ struct RefinementParameters {
   // was given before the fit's covariance was used.
   double min_rotation_sigma_deg = 1.0;
   double max_rotation_sigma_deg = 4.05;
-  // Polish: each kept pose is aligned once more on every voxel-filtered observed point (not
-  // about icp_points of them) with correspondences within polish_correspondence_distance; the
-  // polished pose replaces it when ICP converged within duplicate_angle_deg and
-  // duplicate_distance of it and it verifies at least as well. 0 iterations: no polish.
+  // Polish: each kept pose is aligned once more on every observed point voxel-filtered to
+  // polish_scene_voxel (not about icp_points of them at scene_voxel) against the bundle's samples
+  // at polish_model_spacing (the PoseRefiner built from a bundle; from a ModelSurface, that
+  // surface), with correspondences within polish_correspondence_distance. The polished pose
+  // replaces it when ICP converged within duplicate_angle_deg and duplicate_distance of it and
+  // it verifies no more than polish_score_tolerance worse: a more precise fit moves points by a
+  // fraction of a millimetre, which tips a few across the inlier tolerance either way (0.005
+  // of the score is about 5 of a 4 mm view's ~1000 points). 0 iterations: no polish.
   int polish_iterations = 50;
   double polish_correspondence_distance = 0.005;  // [m]
+  double polish_model_spacing = 0.002;            // [m]
+  double polish_scene_voxel = 0.002;              // [m]
+  double polish_score_tolerance = 0.005;
 };
 
 // One hypothesis and what refinement made of it.
@@ -176,6 +183,7 @@ class PoseRefiner {
 
  private:
   std::shared_ptr<const ModelSurface> surface_;
+  std::shared_ptr<const ModelSurface> polish_surface_;  // the polish's target (finer)
   RefinementParameters parameters_;
 };
 
