@@ -354,8 +354,28 @@ std::vector<RefinedPose> withRollSectors(const std::vector<RefinedPose>& kept,
 // polish_scene_voxel) against the finer polish surface, with tighter correspondences: the starts'
 // ICP runs on a few hundred points against 4 mm samples and settles within half a millimetre and
 // a degree, which leaves a floor of a few tenths of a degree (doc/method.md, "Refinement").
-void polishKept(const std::shared_ptr<const ModelSurface>& surface,
-                const pcl::PointCloud<pcl::PointXYZ>& thinned, const PoseVerifier& verifier,
+// The samples of `surface` that face one of the cameras (object frame) at least a little, or
+// null when fewer than 10 do: what the polish may match a point to. A point on a thin wall's
+// outside otherwise pairs with the inside's samples a few millimetres behind it.
+std::shared_ptr<const ModelSurface> facingPart(const ModelSurface& surface,
+                                               const std::vector<Eigen::Vector3f>& cameras) {
+  std::vector<Eigen::Vector3f> points, normals;
+  for (const auto& sample : surface.cloud()->points) {
+    const Eigen::Vector3f p = sample.getVector3fMap();
+    const Eigen::Vector3f n = sample.getNormalVector3fMap();
+    const bool facing = std::any_of(cameras.begin(), cameras.end(),
+                                    [&](const Eigen::Vector3f& c) { return n.dot(c - p) > 0.0f; });
+    if (!facing) continue;
+    points.push_back(p);
+    normals.push_back(n);
+  }
+  if (points.size() < 10) return nullptr;
+  return std::make_shared<const ModelSurface>(points, normals, surface.bounds(), surface.spacing(),
+                                              surface.spacing());
+}
+
+void polishKept(const ModelSurface& surface, const pcl::PointCloud<pcl::PointXYZ>& thinned,
+                const std::vector<RefinementView>& views, const PoseVerifier& verifier,
                 const RefinementParameters& parameters, std::vector<RefinedPose>* kept) {
   IcpSettings settings;
   settings.max_iterations = parameters.polish_iterations;
@@ -363,9 +383,16 @@ void polishKept(const std::shared_ptr<const ModelSurface>& surface,
   settings.convergence_translation = 0.1 * parameters.convergence_translation;
   settings.convergence_rotation_deg = 0.1 * parameters.convergence_rotation_deg;
   settings.settle_iterations = parameters.polish_iterations;  // PCL's criteria alone
-  IcpAlignment alignment(surface, icpSource(thinned), settings);
+  const auto source = icpSource(thinned);
   for (RefinedPose& pose : *kept) {
-    const IcpOutcome outcome = alignment.align(pose.world_from_object.inverse());
+    const Eigen::Isometry3d object_from_world = pose.world_from_object.inverse();
+    std::vector<Eigen::Vector3f> cameras;
+    for (const RefinementView& view : views) {
+      cameras.push_back((object_from_world * view.world_from_camera.translation()).cast<float>());
+    }
+    const std::shared_ptr<const ModelSurface> facing = facingPart(surface, cameras);
+    if (!facing) continue;
+    const IcpOutcome outcome = IcpAlignment(facing, source, settings).align(object_from_world);
     if (!outcome.converged) continue;
     RefinedPose polished = pose;
     polished.world_from_object = outcome.object_from_world.inverse();
@@ -614,7 +641,8 @@ RefinementResult PoseRefiner::refine(const BinghamMixture& belief, const Eigen::
         parameters_.polish_scene_voxel == parameters_.scene_voxel
             ? thinned
             : voxelFiltered(observation.world, parameters_.polish_scene_voxel);
-    polishKept(polish_surface_, *polish_points, verifier, parameters_, &result.kept);
+    polishKept(*polish_surface_, *polish_points, observation.views, verifier, parameters_,
+               &result.kept);
   }
   if (parameters_.roll_sectors)
     result.kept = withRollSectors(result.kept, *surface_, verifier, parameters_);
