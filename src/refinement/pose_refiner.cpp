@@ -384,16 +384,19 @@ void polishKept(const ModelSurface& surface, const pcl::PointCloud<pcl::PointXYZ
   settings.convergence_rotation_deg = 0.1 * parameters.convergence_rotation_deg;
   settings.settle_iterations = parameters.polish_iterations;  // PCL's criteria alone
   const auto source = icpSource(thinned);
-  for (RefinedPose& pose : *kept) {
+  // Each pose's facing samples and ICP are its own, and the verifier is thread-safe: the poses
+  // are polished in parallel (a first view keeps two).
+  parallelFor(kept->size(), parameters.threads, [&](int, std::size_t index) {
+    RefinedPose& pose = (*kept)[index];
     const Eigen::Isometry3d object_from_world = pose.world_from_object.inverse();
     std::vector<Eigen::Vector3f> cameras;
     for (const RefinementView& view : views) {
       cameras.push_back((object_from_world * view.world_from_camera.translation()).cast<float>());
     }
     const std::shared_ptr<const ModelSurface> facing = facingPart(surface, cameras);
-    if (!facing) continue;
+    if (!facing) return;
     const IcpOutcome outcome = IcpAlignment(facing, source, settings).align(object_from_world);
-    if (!outcome.converged) continue;
+    if (!outcome.converged) return;
     RefinedPose polished = pose;
     polished.world_from_object = outcome.object_from_world.inverse();
     polished.orientation = orientationOf(polished.world_from_object);
@@ -402,7 +405,7 @@ void polishKept(const ModelSurface& surface, const pcl::PointCloud<pcl::PointXYZ
         polished.score.score() >= pose.score.score() - parameters.polish_score_tolerance) {
       pose = polished;
     }
-  }
+  });
 }
 
 // What aligning and verifying a start takes: the same for the belief's starts and restarts. One
