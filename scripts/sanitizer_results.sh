@@ -13,3 +13,22 @@ record_failure() {
 find_test_binary() {
   find "$1/devel/lib" "$1" -maxdepth 4 -type f -name "$2" -perm -u+x | head -1
 }
+
+# run_gtest PREFIX BUILD RESULTS NAME: runs the gtest binary NAME of the build tree BUILD, its
+# results in RESULTS/NAME.xml and its output in RESULTS/NAME.log, and prints "PREFIX: NAME exit S
+# in T s". Returns the binary's exit status, or 127 after recording a failed case when NAME was
+# not built.
+run_gtest() {
+  local prefix=$1 build=$2 results=$3 name=$4 binary start status
+  binary=$(find_test_binary "$build" "$name")
+  if [[ -z "$binary" ]]; then
+    echo "$prefix: $name was not built"
+    record_failure "$results" "$name" built
+    return 127
+  fi
+  start=$(date +%s)
+  "$binary" --gtest_output="xml:$results/$name.xml" > "$results/$name.log" 2>&1
+  status=$?
+  echo "$prefix: $name exit $status in $(( $(date +%s) - start )) s"
+  return $status
+}

@@ -34,16 +34,9 @@ results="$build_dir/test_results_sanitize"
 rm -rf "$results"
 mkdir -p "$results"
 for name in "${tests[@]}"; do
-  binary=$(find_test_binary "$build_dir" "$name")
-  if [[ -z "$binary" ]]; then
-    echo "sanitizers: $name was not built"
-    record_failure "$results" "$name" built
-    continue
-  fi
-  start=$(date +%s)
-  "$binary" --gtest_output="xml:$results/$name.xml" > "$results/$name.log" 2>&1
+  run_gtest sanitizers "$build_dir" "$results" "$name"
   status=$?
-  echo "sanitizers: $name exit $status in $(( $(date +%s) - start )) s"
+  [[ $status -eq 127 ]] && continue  # not built: recorded
   if [[ $status -ne 0 ]]; then
     grep -E -A40 '^==[0-9]+==ERROR|runtime error|^\[  FAILED' "$results/$name.log" | head -60
     if ! grep -q '<failure' "$results/$name.xml" 2>/dev/null; then

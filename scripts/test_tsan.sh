@@ -73,16 +73,9 @@ rm -rf "$results"
 mkdir -p "$results"
 
 for name in "${gtests[@]}"; do
-  binary=$(find_test_binary "$build_dir" "$name")
-  if [[ -z "$binary" ]]; then
-    echo "tsan: $name was not built"
-    record_failure "$results" "$name" built
-    continue
-  fi
-  start=$(date +%s)
-  "$binary" --gtest_output="xml:$results/$name.xml" > "$results/$name.log" 2>&1
+  run_gtest tsan "$build_dir" "$results" "$name"
   status=$?
-  echo "tsan: $name exit $status in $(( $(date +%s) - start )) s"
+  [[ $status -eq 127 ]] && continue  # not built: recorded
   if grep -q '^WARNING: ThreadSanitizer' "$results/$name.log"; then
     grep -E -A30 '^WARNING: ThreadSanitizer' "$results/$name.log" | head -80
     record_failure "$results" "$name" tsan_report
