@@ -571,10 +571,13 @@ PoseRefiner::PoseRefiner(const ModelBundle& model, RefinementParameters paramete
                       model.parameters.surface_spacing, parameters.model_spacing),
                   parameters) {
   // The bundle's samples at polish_model_spacing (its own spacing, 2 mm by default, when that is
-  // coarser): the polish's target.
-  polish_surface_ = std::make_shared<const ModelSurface>(
-      model.surface_points, model.surface_normals, model.bounds, model.parameters.surface_spacing,
-      parameters_.polish_model_spacing);
+  // coarser): the polish's target. Without a polish, or at the same spacing, it is surface_.
+  if (parameters_.polish_iterations > 0 &&
+      parameters_.polish_model_spacing != parameters_.model_spacing) {
+    polish_surface_ = std::make_shared<const ModelSurface>(
+        model.surface_points, model.surface_normals, model.bounds, model.parameters.surface_spacing,
+        parameters_.polish_model_spacing);
+  }
 }
 
 RefinementResult PoseRefiner::refine(const BinghamMixture& belief, const Eigen::Vector3d& position,
