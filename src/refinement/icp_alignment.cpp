@@ -129,8 +129,10 @@ IcpAlignment::IcpAlignment(std::shared_ptr<const ModelSurface> surface,
   // target's normals, which the model has exactly (the mesh's), so the scene needs none.
   icp.setInputSource(observed_world);
   icp.setInputTarget(surface->cloud());
-  // The model's one k-d tree for every start and alignment (PCL would rebuild it on each align()).
-  icp.setSearchMethodTarget(surface->searchTree(), true);
+  // PCL's ICP must hold a search tree for its target, but BatchedCorrespondences answers every
+  // nearest-sample question from the surface's one index: an empty tree PCL is told never to
+  // build (it would otherwise build one per alignment).
+  icp.setSearchMethodTarget(pcl::make_shared<pcl::search::KdTree<pcl::PointNormal>>(), true);
   icp.setTransformationEstimation(registration_->step);
   icp.setCorrespondenceEstimation(pcl::make_shared<BatchedCorrespondences>(surface));
   registration_->surface = surface;
@@ -171,6 +173,10 @@ IcpOutcome IcpAlignment::align(const Eigen::Isometry3d& start_object_from_world,
       return outcome;
     }
     outcome.object_from_world = part.object_from_world;
+    if (part.too_few_pairs) {
+      outcome.too_few_pairs = true;
+      return outcome;
+    }
     const Eigen::Isometry3d moved = before.inverse() * part.object_from_world;
     const bool settled =
         chunk == settings.settle_iterations &&
@@ -201,6 +207,9 @@ IcpOutcome IcpAlignment::alignOnce(const Eigen::Isometry3d& start_object_from_wo
   outcome.degenerate = registration_->step->degenerate || !transform.allFinite();
   if (outcome.degenerate) return outcome;
   outcome.converged = icp.hasConverged();
+  outcome.too_few_pairs = icp.getConvergeCriteria()->getConvergenceState() ==
+                          pcl::registration::DefaultConvergenceCriteria<
+                              float>::CONVERGENCE_CRITERIA_NO_CORRESPONDENCES;
   // Re-orthonormalise: ICP composes its steps in single precision.
   const Eigen::Quaterniond rotation(Eigen::Matrix3d(transform.topLeftCorner<3, 3>()));
   outcome.object_from_world.linear() = rotation.normalized().toRotationMatrix();

@@ -29,6 +29,9 @@ struct IcpSettings {
 struct IcpOutcome {
   bool converged = false;
   bool degenerate = false;  // a step was singular (the surface leaves a motion unconstrained)
+  // PCL stopped before a step: fewer point pairs within the correspondence distance than a
+  // step needs. Not converged; aligning on from there would stop there again.
+  bool too_few_pairs = false;
   // Where ICP stopped: the converged pose, or (not converged, not degenerate) the last one.
   Eigen::Isometry3d object_from_world = Eigen::Isometry3d::Identity();
   double fitness = 0.0;  // [m^2] (converged only)

@@ -94,8 +94,6 @@ ModelSurface::ModelSurface(const std::vector<Eigen::Vector3f>& points,
     point.getNormalVector3fMap() = normals[i].normalized();
     cloud_->push_back(point);
   }
-  search_tree_.reset(new pcl::search::KdTree<pcl::PointNormal>);
-  search_tree_->setInputCloud(cloud_);
   std::vector<Eigen::Vector3f> samples;
   samples.reserve(cloud_->size());
   for (const auto& point : cloud_->points) samples.push_back(point.getVector3fMap());

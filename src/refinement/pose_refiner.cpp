@@ -86,6 +86,10 @@ void checkParameters(const RefinementParameters& p) {
     throw Error("refinement's max_iterations must be at least 1, got " +
                 std::to_string(p.max_iterations));
   }
+  if (!(p.continue_min_score >= -1.0 && p.continue_min_score <= 1.0)) {
+    throw Error("refinement's continue_min_score must be in [-1, 1], got " +
+                std::to_string(p.continue_min_score));
+  }
   if (!(p.min_score >= -1.0 && p.min_score <= 1.0)) {
     throw Error("refinement's min_score must be in [-1, 1], got " + std::to_string(p.min_score));
   }
@@ -283,6 +287,9 @@ Eigen::Vector4d orientationOf(const Eigen::Isometry3d& pose) {
 std::string rejection(const RefinedPose& pose, const IcpOutcome& icp, const BinghamMixture& belief,
                       const Eigen::Vector4d& reference, const RefinementParameters& parameters) {
   if (icp.degenerate) return "ICP was degenerate: the points leave a motion unconstrained";
+  if (icp.too_few_pairs) {
+    return "ICP found too few point pairs within max_correspondence_distance";
+  }
   if (!icp.converged) return "ICP did not converge";
   const double moved = (pose.world_from_object.translation() - pose.start.translation()).norm();
   const double turned = rotationErrorDeg(pose.orientation, pose.start_orientation);
@@ -330,22 +337,24 @@ std::vector<RefinedPose> keptPoses(const std::vector<RefinedPose>& tried,
 
 // The kept poses with their roll sectors (roll_sector.h), best first; a pose on a better one's
 // sector is that pose again, turned, and is dropped.
-std::vector<RefinedPose> withRollSectors(const std::vector<RefinedPose>& kept,
+std::vector<RefinedPose> withRollSectors(std::vector<RefinedPose> kept,
                                          const ModelSurface& surface, const PoseVerifier& verifier,
                                          const RefinementParameters& parameters) {
+  // Every pose's sector in parallel (a first view keeps two), then the turned ones dropped.
+  if (!surface.symmetryAxes().empty()) {
+    parallelFor(kept.size(), parameters.threads, [&](int, std::size_t i) {
+      kept[i].sector_axis = surface.symmetryAxes().front().direction();
+      kept[i].roll_sector_deg = verifiedRollSectorDeg(
+          surface, verifier, kept[i], parameters.restart_step_deg, parameters.keep_score_margin);
+    });
+  }
   std::vector<RefinedPose> distinct;
-  for (RefinedPose pose : kept) {
+  for (const RefinedPose& pose : kept) {
     const bool turned =
         std::any_of(distinct.begin(), distinct.end(), [&](const RefinedPose& better) {
           return onRollSector(better, pose, parameters.duplicate_angle_deg);
         });
-    if (turned) continue;
-    if (!surface.symmetryAxes().empty()) {
-      pose.sector_axis = surface.symmetryAxes().front().direction();
-      pose.roll_sector_deg = verifiedRollSectorDeg(
-          surface, verifier, pose, parameters.restart_step_deg, parameters.keep_score_margin);
-    }
-    distinct.push_back(pose);
+    if (!turned) distinct.push_back(pose);
   }
   return distinct;
 }
@@ -419,9 +428,30 @@ struct Aligner {
   int workers() const { return static_cast<int>(icps.size()); }
 
   // Aligns *pose from its start (whose start_score is set) with worker's ICP and verifies the
-  // result.
+  // result; an ICP still far from fitting after the screening iterations is abandoned there.
   void alignAndVerify(int worker, const Eigen::Vector4d& reference, RefinedPose* pose) const {
-    record(icps[worker]->align(pose->start.inverse()), std::nullopt, reference, pose);
+    IcpAlignment& icp = *icps[worker];
+    const int screening = std::min(parameters->restart_screening_iterations,
+                                   parameters->max_iterations);
+    const IcpOutcome first = icp.align(pose->start.inverse(), screening);
+    if (first.converged || first.degenerate || first.too_few_pairs ||
+        screening == parameters->max_iterations) {
+      record(first, std::nullopt, reference, pose);
+      return;
+    }
+    const double screened = verifier->score(first.object_from_world.inverse()).score();
+    if (screened < parameters->continue_min_score) {
+      record(first, std::nullopt, reference, pose);
+      std::ostringstream reason;
+      reason.precision(3);
+      reason << "abandoned: after " << first.iterations << " ICP iterations it verifies "
+             << screened << ", below continue_min_score " << parameters->continue_min_score;
+      pose->rejection = reason.str();
+      return;
+    }
+    IcpOutcome rest = icp.align(first.object_from_world, parameters->max_iterations - screening);
+    rest.iterations += first.iterations;
+    record(rest, std::nullopt, reference, pose);
   }
 
   // Sets *pose from ICP's outcome and verifies it (unless its score is known) and judges it.
@@ -540,7 +570,7 @@ void restartFrom(std::size_t seed_index, const ModelSurface& surface, const Alig
     RefinedPose& pose = turned[i];
     pose.start_score = aligner.verifier->score(pose.start);
     const IcpOutcome& first = screened[i];
-    if (first.converged || first.degenerate) {
+    if (first.converged || first.degenerate || first.too_few_pairs) {
       aligner.record(first, screening_scores[i], seed.start_orientation, &pose);
       return;
     }
@@ -605,8 +635,6 @@ RefinementResult PoseRefiner::refine(const BinghamMixture& belief, const Eigen::
       evenSubsample(*thinned, parameters_.screening_points);
 
   VisibleCentroids visible(*surface_);
-  std::vector<double> distances;
-  std::vector<int> components;
   for (const OrientationStart& start : orientationHypotheses(belief, parameters_.hypotheses)) {
     RefinedPose pose;
     pose.start_orientation =
@@ -616,24 +644,32 @@ RefinementResult PoseRefiner::refine(const BinghamMixture& belief, const Eigen::
                                   camera_position, &visible);
     pose.world_from_object = pose.start;
     pose.orientation = pose.start_orientation;
-    pose.screening_distance = meanTruncatedDistance(*surface_, *screening_points, pose.start,
-                                                    parameters_.max_correspondence_distance);
     pose.rejection = "screened out: its start fits worse than its component's " +
                      std::to_string(parameters_.max_refined) + " best";
+    result.tried.push_back(pose);
+  }
+  // A first view's two girdles place dozens of starts; each screening is a batched search.
+  parallelFor(result.tried.size(), parameters_.threads, [&](int, std::size_t i) {
+    result.tried[i].screening_distance =
+        meanTruncatedDistance(*surface_, *screening_points, result.tried[i].start,
+                              parameters_.max_correspondence_distance);
+  });
+  std::vector<double> distances;
+  std::vector<int> components;
+  for (const RefinedPose& pose : result.tried) {
     distances.push_back(pose.screening_distance);
     components.push_back(pose.component);
-    result.tried.push_back(pose);
   }
 
   const PoseVerifier verifier(surface_, thinnedViews(observation.views, parameters_.scene_voxel),
                               parameters_.verification);
   Aligner aligner{{}, &verifier, &belief, &parameters_};
   const auto source = icpSource(*evenSubsample(*thinned, parameters_.icp_points));
+  const IcpSettings settings{parameters_.max_iterations, parameters_.max_correspondence_distance,
+                             parameters_.convergence_translation,
+                             parameters_.convergence_rotation_deg};
   for (int worker = 0; worker < parameters_.threads; ++worker) {
-    aligner.icps.push_back(std::make_unique<IcpAlignment>(
-        surface_, source,
-        IcpSettings{parameters_.max_iterations, parameters_.max_correspondence_distance,
-                    parameters_.convergence_translation, parameters_.convergence_rotation_deg}));
+    aligner.icps.push_back(std::make_unique<IcpAlignment>(surface_, source, settings));
   }
   aligner.alignAll(bestStarts(distances, components, parameters_.max_refined), &result.tried,
                    [](const RefinedPose& pose) { return pose.start_orientation; });
@@ -651,7 +687,7 @@ RefinementResult PoseRefiner::refine(const BinghamMixture& belief, const Eigen::
                &result.kept);
   }
   if (parameters_.roll_sectors)
-    result.kept = withRollSectors(result.kept, *surface_, verifier, parameters_);
+    result.kept = withRollSectors(std::move(result.kept), *surface_, verifier, parameters_);
   const CovarianceBounds bounds{parameters_.min_position_sigma, parameters_.max_position_sigma,
                                 parameters_.min_rotation_sigma_deg * M_PI / 180.0,
                                 parameters_.max_rotation_sigma_deg * M_PI / 180.0};

@@ -400,6 +400,53 @@ TEST_F(PoseRefinerTest, RefusesIcpThatDivergesOrDoesNotConverge) {
       << describe(refined, truth());
 }
 
+TEST_F(PoseRefinerTest, RefusesIcpThatFindsTooFewPairsInsteadOfWaitingForIt) {
+  // Within 10 micrometres no noisy point has a sample: PCL stops before its first step. Aligning
+  // on from where it stopped used to ask PCL again for ever (the evaluation hung on a view).
+  const RefinementView v = view(kHandleSideOn, 1.0);
+  const BinghamMixture belief({1.0}, {concentratedAt(truth(), 20.0)});
+  RefinementParameters blind;
+  blind.max_correspondence_distance = 1e-5;
+  const RefinementResult result = PoseRefiner(*surface_, blind).refine(belief, position(), {v});
+  int aligned = 0;
+  for (const RefinedPose& pose : result.tried) {
+    if (!pose.screened_in) continue;
+    ++aligned;
+    EXPECT_FALSE(pose.accepted);
+    EXPECT_EQ(pose.rejection, "ICP found too few point pairs within max_correspondence_distance");
+  }
+  EXPECT_GT(aligned, 0);
+  EXPECT_TRUE(result.kept.empty());
+}
+
+TEST_F(PoseRefinerTest, AbandonsAStartStillFittingBadlyAfterTheScreeningIterations) {
+  // A start turned 0.3 rad from the truth needs several ICP steps. After one it still fits
+  // worse than a perfect score, so with continue_min_score 1 it is abandoned there, with why;
+  // with the default its ICP goes on and is accepted.
+  const RefinementView v = view(kHandleSideOn, 1.0);
+  const BinghamMixture belief({1.0}, {concentratedAt(turnedAboutSight(v, 0.3), 20.0)});
+  RefinementParameters impatient;
+  impatient.restart_screening_iterations = 1;
+  impatient.continue_min_score = 1.0;
+  impatient.restart_seeds = 0;
+  const RefinementResult abandoned =
+      PoseRefiner(*surface_, impatient).refine(belief, position(), {v});
+  ASSERT_EQ(beliefStarts(abandoned).size(), 1u);
+  EXPECT_FALSE(abandoned.tried[0].accepted);
+  EXPECT_EQ(abandoned.tried[0].icp_iterations, 1);
+  EXPECT_EQ(abandoned.tried[0].rejection.rfind("abandoned: after 1 ICP iterations it verifies", 0),
+            0u)
+      << abandoned.tried[0].rejection;
+  EXPECT_TRUE(abandoned.kept.empty());
+  impatient.continue_min_score = RefinementParameters().continue_min_score;
+  const RefinementResult continued =
+      PoseRefiner(*surface_, impatient).refine(belief, position(), {v});
+  ASSERT_EQ(continued.kept.size(), 1u) << describe(continued, truth());
+  EXPECT_GT(continued.tried[0].icp_iterations, 1);
+  EXPECT_LT(rotationErrorDeg(continued.kept[0].orientation, truth()), 2.0)
+      << describe(continued, truth());
+}
+
 TEST_F(PoseRefinerTest, RestartsTurnTheHandleFromAWrongTurnAboutTheMugsAxis) {
   // The belief (broad, so the truth stays in its support) believes the mug turned 120 degrees
   // about its own axis: ICP from there fits the body with the handle on the wrong side and
@@ -538,6 +585,9 @@ TEST_F(PoseRefinerTest, RefusesInvalidParameters) {
   EXPECT_THROW(PoseRefiner(*surface_, parameters), Error);
   parameters = {};
   parameters.polish_score_tolerance = -0.01;
+  EXPECT_THROW(PoseRefiner(*surface_, parameters), Error);
+  parameters = {};
+  parameters.continue_min_score = 1.5;
   EXPECT_THROW(PoseRefiner(*surface_, parameters), Error);
 }
 

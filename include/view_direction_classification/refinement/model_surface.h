@@ -2,7 +2,6 @@
 
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
-#include <pcl/search/kdtree.h>
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
@@ -29,11 +28,8 @@ class ModelSurface {
                double source_spacing, double spacing);
 
   const pcl::PointCloud<pcl::PointNormal>::Ptr& cloud() const { return cloud_; }
-  // A k-d tree of the samples, built once, for PCL's ICP to hold as its target's search (it must
-  // have one; the alignment's own correspondence search is nearest()). Never changed after
-  // construction, so the alignments of several threads share it.
-  const pcl::search::KdTree<pcl::PointNormal>::Ptr& searchTree() const { return search_tree_; }
-  // The same samples for batched searches (nearest_points.h: what refinement uses).
+  // The samples' index for batched nearest-sample searches (nearest_points.h), built once; every
+  // search of refinement asks it.
   const NearestPoints& nearest() const { return *nearest_; }
   std::size_t size() const { return cloud_->size(); }
   // [m] The thinned samples' spacing (never below the source's).
@@ -50,7 +46,6 @@ class ModelSurface {
 
  private:
   pcl::PointCloud<pcl::PointNormal>::Ptr cloud_;
-  pcl::search::KdTree<pcl::PointNormal>::Ptr search_tree_;
   std::unique_ptr<const NearestPoints> nearest_;
   double spacing_;
   Eigen::AlignedBox3d bounds_;

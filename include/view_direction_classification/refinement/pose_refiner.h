@@ -37,6 +37,11 @@ struct RefinementParameters {
   // well-spread points pin down six degrees of freedom as well as thousands.
   int icp_points = 400;
   int max_iterations = 100;                    // not converged within these: refused
+  // A start's ICP still moving after restart_screening_iterations whose pose then verifies below
+  // continue_min_score is abandoned (refused) there: it has not brought a third of the points
+  // onto the surface and crawls on (59 iterations, a quarter of a mug's first view) to a pose
+  // verification refuses. It costs one verification more per start not converged by then.
+  double continue_min_score = 0.3;
   double max_correspondence_distance = 0.015;  // [m]
   // Converged when a step moves the pose by less than both of these.
   double convergence_translation = 1e-4;  // [m]
@@ -102,7 +107,7 @@ struct RefinementParameters {
   // it verifies no more than polish_score_tolerance worse: a more precise fit moves points by a
   // fraction of a millimetre, which tips a few across the inlier tolerance either way (0.005
   // of the score is about 5 of a 4 mm view's ~1000 points). 0 iterations: no polish.
-  int polish_iterations = 50;
+  int polish_iterations = 20;
   double polish_correspondence_distance = 0.005;  // [m]
   double polish_model_spacing = 0.002;            // [m]
   double polish_scene_voxel = 0.002;              // [m]
