@@ -207,9 +207,9 @@ IcpOutcome IcpAlignment::alignOnce(const Eigen::Isometry3d& start_object_from_wo
   outcome.degenerate = registration_->step->degenerate || !transform.allFinite();
   if (outcome.degenerate) return outcome;
   outcome.converged = icp.hasConverged();
-  outcome.too_few_pairs = icp.getConvergeCriteria()->getConvergenceState() ==
-                          pcl::registration::DefaultConvergenceCriteria<
-                              float>::CONVERGENCE_CRITERIA_NO_CORRESPONDENCES;
+  outcome.too_few_pairs =
+      icp.getConvergeCriteria()->getConvergenceState() ==
+      pcl::registration::DefaultConvergenceCriteria<float>::CONVERGENCE_CRITERIA_NO_CORRESPONDENCES;
   // Re-orthonormalise: ICP composes its steps in single precision.
   const Eigen::Quaterniond rotation(Eigen::Matrix3d(transform.topLeftCorner<3, 3>()));
   outcome.object_from_world.linear() = rotation.normalized().toRotationMatrix();

@@ -337,8 +337,8 @@ std::vector<RefinedPose> keptPoses(const std::vector<RefinedPose>& tried,
 
 // The kept poses with their roll sectors (roll_sector.h), best first; a pose on a better one's
 // sector is that pose again, turned, and is dropped.
-std::vector<RefinedPose> withRollSectors(std::vector<RefinedPose> kept,
-                                         const ModelSurface& surface, const PoseVerifier& verifier,
+std::vector<RefinedPose> withRollSectors(std::vector<RefinedPose> kept, const ModelSurface& surface,
+                                         const PoseVerifier& verifier,
                                          const RefinementParameters& parameters) {
   // Every pose's sector in parallel (a first view keeps two), then the turned ones dropped.
   if (!surface.symmetryAxes().empty()) {
@@ -431,8 +431,8 @@ struct Aligner {
   // result; an ICP still far from fitting after the screening iterations is abandoned there.
   void alignAndVerify(int worker, const Eigen::Vector4d& reference, RefinedPose* pose) const {
     IcpAlignment& icp = *icps[worker];
-    const int screening = std::min(parameters->restart_screening_iterations,
-                                   parameters->max_iterations);
+    const int screening =
+        std::min(parameters->restart_screening_iterations, parameters->max_iterations);
     const IcpOutcome first = icp.align(pose->start.inverse(), screening);
     if (first.converged || first.degenerate || first.too_few_pairs ||
         screening == parameters->max_iterations) {

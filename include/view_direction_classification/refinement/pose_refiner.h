@@ -36,7 +36,7 @@ struct RefinementParameters {
   // k-th; <= 0: all of them) against the model's surface. Its cost grows with them; a few hundred
   // well-spread points pin down six degrees of freedom as well as thousands.
   int icp_points = 400;
-  int max_iterations = 100;                    // not converged within these: refused
+  int max_iterations = 100;  // not converged within these: refused
   // A start's ICP still moving after restart_screening_iterations whose pose then verifies below
   // continue_min_score is abandoned (refused) there: it has not brought a third of the points
   // onto the surface and crawls on (59 iterations, a quarter of a mug's first view) to a pose
