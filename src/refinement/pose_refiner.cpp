@@ -282,6 +282,37 @@ Eigen::Vector4d orientationOf(const Eigen::Isometry3d& pose) {
   return q(0) < 0.0 ? Eigen::Vector4d(-q) : q;
 }
 
+// The belief's starts (pose_hypotheses.h), each placed where the first camera sees the observed
+// centroid and screened by its mean truncated distance to the screening points.
+std::vector<RefinedPose> placedStarts(const BinghamMixture& belief, const Eigen::Vector3d& position,
+                                      const Eigen::Vector3d& observed_centroid,
+                                      const Eigen::Vector3d& camera_position,
+                                      const ModelSurface& surface,
+                                      const pcl::PointCloud<pcl::PointXYZ>& screening_points,
+                                      const RefinementParameters& parameters) {
+  VisibleCentroids visible(surface);
+  std::vector<RefinedPose> starts;
+  for (const OrientationStart& start : orientationHypotheses(belief, parameters.hypotheses)) {
+    RefinedPose pose;
+    pose.start_orientation =
+        start.orientation(0) < 0 ? Eigen::Vector4d(-start.orientation) : start.orientation;
+    pose.component = start.component;
+    pose.start = placedHypothesis(pose.start_orientation, position, observed_centroid,
+                                  camera_position, &visible);
+    pose.world_from_object = pose.start;
+    pose.orientation = pose.start_orientation;
+    pose.rejection = "screened out: its start fits worse than its component's " +
+                     std::to_string(parameters.max_refined) + " best";
+    starts.push_back(pose);
+  }
+  // A first view's two girdles place dozens of starts; each screening is a batched search.
+  parallelFor(starts.size(), parameters.threads, [&](int, std::size_t i) {
+    starts[i].screening_distance = meanTruncatedDistance(surface, screening_points, starts[i].start,
+                                                         parameters.max_correspondence_distance);
+  });
+  return starts;
+}
+
 // Empty when the refined pose is accepted, else why not. reference: the belief's orientation the
 // pose's chain of starts began from, whose density the result must stay near.
 std::string rejection(const RefinedPose& pose, const IcpOutcome& icp, const BinghamMixture& belief,
@@ -417,6 +448,15 @@ void polishKept(const ModelSurface& surface, const pcl::PointCloud<pcl::PointXYZ
   });
 }
 
+// Why a start's ICP was abandoned after `iterations`.
+std::string abandonment(int iterations, double score, double continue_min_score) {
+  std::ostringstream reason;
+  reason.precision(3);
+  reason << "abandoned: after " << iterations << " ICP iterations it verifies " << score
+         << ", below continue_min_score " << continue_min_score;
+  return reason.str();
+}
+
 // What aligning and verifying a start takes: the same for the belief's starts and restarts. One
 // ICP per worker thread (an IcpAlignment is not thread-safe; the verifier and the belief are).
 struct Aligner {
@@ -442,11 +482,7 @@ struct Aligner {
     const double screened = verifier->score(first.object_from_world.inverse()).score();
     if (screened < parameters->continue_min_score) {
       record(first, std::nullopt, reference, pose);
-      std::ostringstream reason;
-      reason.precision(3);
-      reason << "abandoned: after " << first.iterations << " ICP iterations it verifies "
-             << screened << ", below continue_min_score " << parameters->continue_min_score;
-      pose->rejection = reason.str();
+      pose->rejection = abandonment(first.iterations, screened, parameters->continue_min_score);
       return;
     }
     IcpOutcome rest = icp.align(first.object_from_world, parameters->max_iterations - screening);
@@ -634,26 +670,8 @@ RefinementResult PoseRefiner::refine(const BinghamMixture& belief, const Eigen::
   const pcl::PointCloud<pcl::PointXYZ>::Ptr screening_points =
       evenSubsample(*thinned, parameters_.screening_points);
 
-  VisibleCentroids visible(*surface_);
-  for (const OrientationStart& start : orientationHypotheses(belief, parameters_.hypotheses)) {
-    RefinedPose pose;
-    pose.start_orientation =
-        start.orientation(0) < 0 ? Eigen::Vector4d(-start.orientation) : start.orientation;
-    pose.component = start.component;
-    pose.start = placedHypothesis(pose.start_orientation, position, observed_centroid,
-                                  camera_position, &visible);
-    pose.world_from_object = pose.start;
-    pose.orientation = pose.start_orientation;
-    pose.rejection = "screened out: its start fits worse than its component's " +
-                     std::to_string(parameters_.max_refined) + " best";
-    result.tried.push_back(pose);
-  }
-  // A first view's two girdles place dozens of starts; each screening is a batched search.
-  parallelFor(result.tried.size(), parameters_.threads, [&](int, std::size_t i) {
-    result.tried[i].screening_distance =
-        meanTruncatedDistance(*surface_, *screening_points, result.tried[i].start,
-                              parameters_.max_correspondence_distance);
-  });
+  result.tried = placedStarts(belief, position, observed_centroid, camera_position, *surface_,
+                              *screening_points, parameters_);
   std::vector<double> distances;
   std::vector<int> components;
   for (const RefinedPose& pose : result.tried) {
