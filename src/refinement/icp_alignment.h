@@ -36,6 +36,8 @@ struct IcpOutcome {
   Eigen::Isometry3d object_from_world = Eigen::Isometry3d::Identity();
   double fitness = 0.0;  // [m^2] (converged only)
   int iterations = 0;
+  // Nothing more to align from here: converged, degenerate, or stopped for too few pairs.
+  bool ended() const { return converged || degenerate || too_few_pairs; }
 };
 
 // Aligns one fixed set of observed points (fixed frame) to the model from many starts, with one

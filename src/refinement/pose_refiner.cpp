@@ -470,12 +470,10 @@ struct Aligner {
   // Aligns *pose from its start (whose start_score is set) with worker's ICP and verifies the
   // result; an ICP still far from fitting after the screening iterations is abandoned there.
   void alignAndVerify(int worker, const Eigen::Vector4d& reference, RefinedPose* pose) const {
-    IcpAlignment& icp = *icps[worker];
     const int screening =
         std::min(parameters->restart_screening_iterations, parameters->max_iterations);
-    const IcpOutcome first = icp.align(pose->start.inverse(), screening);
-    if (first.converged || first.degenerate || first.too_few_pairs ||
-        screening == parameters->max_iterations) {
+    const IcpOutcome first = icps[worker]->align(pose->start.inverse(), screening);
+    if (first.ended() || screening == parameters->max_iterations) {
       record(first, std::nullopt, reference, pose);
       return;
     }
@@ -485,7 +483,16 @@ struct Aligner {
       pose->rejection = abandonment(first.iterations, screened, parameters->continue_min_score);
       return;
     }
-    IcpOutcome rest = icp.align(first.object_from_world, parameters->max_iterations - screening);
+    alignRest(worker, first, reference, pose);
+  }
+
+  // Aligns *pose on from `first`, a short alignment of its start that has not ended, to the end
+  // of a full ICP (max_iterations in all: the same iterations as one from the start), verifies
+  // the result and judges it.
+  void alignRest(int worker, const IcpOutcome& first, const Eigen::Vector4d& reference,
+                 RefinedPose* pose) const {
+    IcpOutcome rest =
+        icps[worker]->align(first.object_from_world, parameters->max_iterations - first.iterations);
     rest.iterations += first.iterations;
     record(rest, std::nullopt, reference, pose);
   }
@@ -606,14 +613,11 @@ void restartFrom(std::size_t seed_index, const ModelSurface& surface, const Alig
     RefinedPose& pose = turned[i];
     pose.start_score = aligner.verifier->score(pose.start);
     const IcpOutcome& first = screened[i];
-    if (first.converged || first.degenerate || first.too_few_pairs) {
+    if (first.ended()) {
       aligner.record(first, screening_scores[i], seed.start_orientation, &pose);
       return;
     }
-    IcpOutcome rest = aligner.icps[worker]->align(first.object_from_world,
-                                                  parameters.max_iterations - first.iterations);
-    rest.iterations += first.iterations;
-    aligner.record(rest, std::nullopt, seed.start_orientation, &pose);
+    aligner.alignRest(worker, first, seed.start_orientation, &pose);
   });
   tried->insert(tried->end(), turned.begin(), turned.end());
 }
