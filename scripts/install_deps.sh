@@ -24,7 +24,7 @@ packages=(
   python3-diagnostic-msgs
   rosbash python3-roslaunch python3-rosnode python3-rosservice python3-rostopic rosout
   # the core's libraries
-  libpcl-dev libflann-dev libeigen3-dev liblbfgspp-dev libhdf5-dev hdf5-tools python3-h5py
+  libpcl-dev libflann-dev libnanoflann-dev libeigen3-dev liblbfgspp-dev libhdf5-dev hdf5-tools python3-h5py
   libboost-dev libassimp-dev libcli11-dev nlohmann-json3-dev libpng-dev
   # tests, benchmarks and plots
   libgtest-dev libbenchmark-dev python3-matplotlib

@@ -15,11 +15,16 @@ find_test_binary() {
 }
 
 # run_gtest PREFIX BUILD RESULTS NAME: runs the gtest binary NAME of the build tree BUILD, its
-# results in RESULTS/NAME.xml and its output in RESULTS/NAME.log, and prints "PREFIX: NAME exit S
-# in T s". Returns the binary's exit status, or 127 after recording a failed case when NAME was
-# not built.
+# results in RESULTS/NAME*.xml and its output in RESULTS/NAME.log, and prints "PREFIX: NAME exit S
+# in T s". Returns the binary's exit status (the worst of its shards'), or 127 after recording a
+# failed case when NAME was not built.
+# The cases run as TEST_SHARDS (default 2, one per core) gtest shards at once: most cases run on
+# one thread, and a sanitized binary is mostly run time, so one process at a time leaves a core
+# idle (doc/hardening.md, "Sanitizer test suite"). Each shard is its own process, so each ends
+# with its own leak check and halts at its own first report.
 run_gtest() {
-  local prefix=$1 build=$2 results=$3 name=$4 binary start status
+  local prefix=$1 build=$2 results=$3 name=$4 binary start status=0 shards=${TEST_SHARDS:-2}
+  local shard shard_status pids=()
   binary=$(find_test_binary "$build" "$name")
   if [[ -z "$binary" ]]; then
     echo "$prefix: $name was not built"
@@ -27,8 +32,25 @@ run_gtest() {
     return 127
   fi
   start=$(date +%s)
-  "$binary" --gtest_output="xml:$results/$name.xml" > "$results/$name.log" 2>&1
-  status=$?
+  for (( shard = 0; shard < shards; ++shard )); do
+    GTEST_TOTAL_SHARDS=$shards GTEST_SHARD_INDEX=$shard \
+      "$binary" --gtest_output="xml:$results/$name.shard$shard.xml" \
+      > "$results/$name.shard$shard.log" 2>&1 &
+    pids+=($!)
+  done
+  for (( shard = 0; shard < shards; ++shard )); do
+    wait "${pids[$shard]}"
+    shard_status=$?
+    (( shard_status > status )) && status=$shard_status
+    { echo "=== $name, shard $shard of $shards: exit $shard_status"
+      cat "$results/$name.shard$shard.log"; } >> "$results/$name.log"
+    rm -f "$results/$name.shard$shard.log"
+  done
   echo "$prefix: $name exit $status in $(( $(date +%s) - start )) s"
   return $status
+}
+
+# has_failed_case RESULTS NAME: whether a result file of NAME's shards records a failed case.
+has_failed_case() {
+  grep -q '<failure' "$1/$2".*xml 2>/dev/null
 }

@@ -39,7 +39,7 @@ for name in "${tests[@]}"; do
   [[ $status -eq 127 ]] && continue  # not built: recorded
   if [[ $status -ne 0 ]]; then
     grep -E -A40 '^==[0-9]+==ERROR|runtime error|^\[  FAILED' "$results/$name.log" | head -60
-    if ! grep -q '<failure' "$results/$name.xml" 2>/dev/null; then
+    if ! has_failed_case "$results" "$name"; then
       record_failure "$results" "$name" sanitizer_report_or_crash
     fi
   fi

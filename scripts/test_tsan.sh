@@ -79,7 +79,7 @@ for name in "${gtests[@]}"; do
   if grep -q '^WARNING: ThreadSanitizer' "$results/$name.log"; then
     grep -E -A30 '^WARNING: ThreadSanitizer' "$results/$name.log" | head -80
     record_failure "$results" "$name" tsan_report
-  elif [[ $status -ne 0 ]] && ! grep -q '<failure' "$results/$name.xml" 2>/dev/null; then
+  elif [[ $status -ne 0 ]] && ! has_failed_case "$results" "$name"; then
     tail -20 "$results/$name.log"
     record_failure "$results" "$name" exit_status
   fi

@@ -27,7 +27,7 @@ Matches matchesOf(const ModelSurface& surface, const pcl::PointCloud<pcl::PointX
   const std::vector<Eigen::Vector3f> queries = objectFramePoints(points_world, object_from_world);
   std::vector<int> indices;
   std::vector<float> squared;
-  surface.nearest().search(queries, &indices, &squared);
+  surface.nearest().search(queries, &indices, &squared, max_distance);
   Matches matches;
   for (std::size_t i = 0; i < queries.size(); ++i) {
     if (indices[i] < 0 || squared[i] > max_squared) continue;

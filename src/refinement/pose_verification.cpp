@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -12,6 +13,9 @@
 namespace vdc {
 
 namespace {
+
+// [1] The largest |x / z| or |y / z| of an observed point the verifier looks at.
+constexpr float kMaxRayTangent = 1e6f;
 
 void checkNonNegative(double value, const char* name) {
   if (!(value >= 0.0) || !std::isfinite(value)) {
@@ -40,15 +44,24 @@ PoseVerifier::PoseVerifier(std::shared_ptr<const ModelSurface> surface,
   for (const RefinementView& view : views) {
     if (!view.points || view.points->empty()) continue;
     auto indexed = std::make_unique<IndexedView>();
-    indexed->points = view.points;
+    auto points = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
     std::vector<Eigen::Vector3f> rays;
     std::vector<Eigen::Vector2f> flat;  // the same rays in the image plane, for the footprint
+    points->reserve(view.points->size());
     rays.reserve(view.points->size());
     flat.reserve(view.points->size());
     for (const auto& p : view.points->points) {
-      flat.emplace_back(p.x / p.z, p.y / p.z);
-      rays.emplace_back(flat.back().x(), flat.back().y(), 0.0f);
+      const Eigen::Vector2f ray(p.x / p.z, p.y / p.z);
+      // A point at no depth, or 89.99994 degrees or more off the optical axis, is in no camera's
+      // image; its ray would be infinite or near a float's maximum, where a k-d tree's split
+      // overflows (doc/hardening.md).
+      if (!(p.z > 0.0f) || !(ray.cwiseAbs().maxCoeff() <= kMaxRayTangent)) continue;
+      points->push_back(p);
+      flat.push_back(ray);
+      rays.emplace_back(ray.x(), ray.y(), 0.0f);
     }
+    if (points->empty()) continue;
+    indexed->points = points;
     indexed->footprint = convexHull(std::move(flat));
     indexed->rays = std::make_unique<const NearestPoints>(std::move(rays));
     indexed->camera_from_world = view.world_from_camera.inverse();
@@ -92,7 +105,7 @@ void PoseVerifier::addViewScore(const IndexedView& view, const Eigen::Isometry3d
   for (const auto& p : view.points->points) {
     queries.push_back(object_from_camera * p.getVector3fMap());
   }
-  surface_->nearest().search(queries, &index, &squared);
+  surface_->nearest().search(queries, &index, &squared, neighbour_radius_);
   score->observed += static_cast<int>(queries.size());
   for (std::size_t i = 0; i < queries.size(); ++i) {
     if (index[i] < 0 || squared[i] > radius_sq) continue;
@@ -105,6 +118,7 @@ void PoseVerifier::addViewScore(const IndexedView& view, const Eigen::Isometry3d
   const Eigen::Isometry3f transform = camera_from_object.cast<float>();
   const Eigen::Matrix3f rotation = transform.linear();
   std::vector<Eigen::Vector3f> predicted, rays;
+  float nearest_z = std::numeric_limits<float>::infinity();  // bounds every ray's radius below
   for (const auto& sample : model.points) {
     const Eigen::Vector3f m = transform * sample.getVector3fMap();
     if (!(m.z() > 0.0f)) continue;
@@ -112,9 +126,10 @@ void PoseVerifier::addViewScore(const IndexedView& view, const Eigen::Isometry3d
     if (-n.dot(m) / m.norm() < parameters_.min_facing_cosine) continue;
     predicted.push_back(m);
     rays.emplace_back(m.x() / m.z(), m.y() / m.z(), 0.0f);
+    nearest_z = std::min(nearest_z, m.z());
   }
   score->predicted += static_cast<int>(predicted.size());
-  view.rays->search(rays, &index, &squared);
+  view.rays->search(rays, &index, &squared, neighbour_radius_ / nearest_z);
   for (std::size_t i = 0; i < predicted.size(); ++i) {
     const float ray_radius = static_cast<float>(neighbour_radius_) / predicted[i].z();
     if (index[i] < 0 || squared[i] > ray_radius * ray_radius) {

@@ -26,7 +26,7 @@ double meanTruncatedDistance(const ModelSurface& surface,
   const std::vector<Eigen::Vector3f> queries = objectFramePoints(points_world, object_from_world);
   std::vector<int> indices;
   std::vector<float> squared;
-  surface.nearest().search(queries, &indices, &squared);
+  surface.nearest().search(queries, &indices, &squared, truncation);
   const float truncation_sq = static_cast<float>(truncation * truncation);
   double sum = 0.0;
   for (const float d2 : squared) sum += d2 < truncation_sq ? std::sqrt(d2) : truncation;

@@ -543,6 +543,30 @@ TEST_F(PoseRefinerTest, SkipsBadInputWithAReason) {
   EXPECT_EQ(skipped(bad_pose, position()), "a camera pose is not finite");
 }
 
+TEST_F(PoseRefinerTest, VerificationIgnoresPointsNoCameraCouldHaveSeen) {
+  // A point at (almost) no depth, or far off the optical axis, has no ray in the image: its x / z
+  // is infinite or near a float's maximum, where a k-d tree over the rays would split badly.
+  RefinementView v = view(kHandleSideOn, 1.0);
+  auto finite = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  for (const auto& p : v.points->points) {
+    if (std::isfinite(p.z)) finite->push_back(p);
+  }
+  v.points = finite;
+  RefinementView with_bad_points = v;
+  auto points = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>(*finite);
+  points->push_back(pcl::PointXYZ(0.1f, 0.0f, 1e-39f));
+  points->push_back(pcl::PointXYZ(1000.0f, -1000.0f, 1e-4f));
+  points->push_back(pcl::PointXYZ(0.1f, 0.1f, 0.0f));
+  with_bad_points.points = points;
+  const VerificationScore clean = PoseVerifier(*surface_, {v}).score(world_from_object_);
+  ASSERT_GT(clean.score(), 0.9);
+  const VerificationScore scored =
+      PoseVerifier(*surface_, {with_bad_points}).score(world_from_object_);
+  EXPECT_EQ(scored.observed, clean.observed);
+  EXPECT_EQ(scored.predicted, clean.predicted);
+  EXPECT_DOUBLE_EQ(scored.score(), clean.score());
+}
+
 TEST_F(PoseRefinerTest, RefusesInvalidParameters) {
   RefinementParameters parameters;
   parameters.min_points = 2;

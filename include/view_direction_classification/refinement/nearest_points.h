@@ -2,16 +2,18 @@
 
 #include <Eigen/Core>
 
+#include <limits>
 #include <memory>
 #include <vector>
 
 namespace vdc {
 
-// Nearest-neighbour search over a fixed set of 3D points that answers many queries in one call.
-// A single-point search through PCL's KdTreeFLANN pays FLANN's per-call OpenMP set-up, about
-// 7 us on the project's machine against under 1 us for the search itself; refinement asks
-// hundreds of thousands of such questions per view, so it asks them in batches. Immutable after
-// construction; search() is const and thread-safe.
+// Exact nearest-neighbour search over a fixed set of 3D points that answers many queries in one
+// call, through nanoflann's k-d tree. Refinement asks hundreds of thousands of such questions
+// per view. A single-point search through PCL's KdTreeFLANN pays FLANN's per-call OpenMP set-up,
+// about 7 us on the project's machine against under 1 us for the search itself; FLANN's batched
+// search, used before nanoflann, made refinement about a quarter slower (doc/performance.md).
+// Immutable after construction; search() is const and thread-safe.
 class NearestPoints {
  public:
   explicit NearestPoints(std::vector<Eigen::Vector3f> points);
@@ -20,9 +22,13 @@ class NearestPoints {
   NearestPoints& operator=(const NearestPoints&) = delete;
 
   // For each query, the index of its nearest point and the squared distance to it (-1 and
-  // infinity when there are no points).
+  // infinity when there are no points). With a finite max_distance [m] a query whose nearest
+  // point lies farther is reported as having none: every caller drops such pairs anyway, and a
+  // bounded search prunes the tree from the start, where an unbounded one explores everything
+  // nearer than the first leaf it reaches (a point of a wrong pose's cloud far off the model).
   void search(const std::vector<Eigen::Vector3f>& queries, std::vector<int>* indices,
-              std::vector<float>* squared_distances) const;
+              std::vector<float>* squared_distances,
+              double max_distance = std::numeric_limits<double>::infinity()) const;
   std::size_t size() const { return points_.size(); }
 
  private:
