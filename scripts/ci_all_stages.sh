@@ -4,8 +4,9 @@
 #   1. make test        the README's test command (installs what it needs, builds, every test);
 #                       always run whole: the budget never cuts it.
 #   2. fuzz             the clang ASan + UBSan build's five libFuzzer targets (build-asan/, shared
-#                       with stage 3), each for FUZZ_SECONDS (60), shortened to share what is left
-#                       of the budget when that is less (at least 10 s each, else not run).
+#                       with stage 3), each for FUZZ_SECONDS (60), two at once, shortened to
+#                       share what is left of the budget when that is less (at least 10 s each,
+#                       else not run).
 #   3. sanitizers       the gtest binaries of `make test-sanitize`, cheapest first, each built and
 #                       run while the budget lasts; the ones the budget does not reach are listed
 #                       as not run (`make test-sanitize` runs them all, doc/hardening.md).
@@ -86,7 +87,9 @@ if [[ $build_status -ne 0 && $build_status -ne 124 ]]; then
 elif [[ $build_status -eq 124 ]]; then
   not_run+=("fuzz (the build did not finish within the budget)")
 else
-  share=$(( ($(remaining) - 120) / ${#fuzz_targets[@]} ))
+  # scripts/fuzz.sh runs two targets at once: the five take three rounds.
+  rounds=$(( (${#fuzz_targets[@]} + 1) / 2 ))
+  share=$(( ($(remaining) - 120) / rounds ))
   seconds=$(( share < ${FUZZ_SECONDS:-60} ? share : ${FUZZ_SECONDS:-60} ))
   if (( seconds < 10 )); then
     not_run+=("fuzz (${share} s per target left)")

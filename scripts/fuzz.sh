@@ -7,6 +7,7 @@
 # Only the fuzz targets and the libraries they link are built.
 #   scripts/fuzz.sh [name...]   (names: mesh model_bundle cloud_conversion bingham_conversion
 #                                server_requests; default all)
+# FUZZ_JOBS (default 2) targets run at once.
 # Exit 1 if any target crashed, leaked, ran out of memory or timed out on an input. The closing
 # line is "fuzz: N passed, N failed (targets...)".
 set -uo pipefail
@@ -25,18 +26,39 @@ export ASAN_OPTIONS=${ASAN_OPTIONS:-halt_on_error=1:detect_leaks=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}
 # Leaks inside the libraries underneath, each with its reason (test/sanitizer/lsan.supp).
 export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$PWD/test/sanitizer/lsan.supp:print_suppressions=0}
-failed=()
-for name in "${targets[@]}"; do
-  corpus="$build_dir/corpus/$name" artifacts="$build_dir/artifacts/$name/"
+# Runs target $1 for $seconds; its exit status goes to $build_dir/fuzz_$1.status.
+run_target() {
+  local name=$1 corpus="$build_dir/corpus/$1" artifacts="$build_dir/artifacts/$1/"
   mkdir -p "$corpus" "$artifacts"
-  dictionary=()
+  local dictionary=()
   [[ -f "fuzz/dictionaries/$name.dict" ]] && dictionary=(-dict="fuzz/dictionaries/$name.dict")
-  echo "fuzz: $name for ${seconds} s"
   # -timeout: an input that takes 10 s is a hang (a request or file that stalls a node).
   "$build_dir/fuzz/vdc_${name}_fuzzer" "$corpus" "fuzz/corpus/$name" "${dictionary[@]}" \
       -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
       -artifact_prefix="$artifacts" > "$build_dir/fuzz_$name.log" 2>&1
-  status=$?
+  echo $? > "$build_dir/fuzz_$name.status"
+}
+
+# FUZZ_JOBS targets at once (default 2, one per core): a libFuzzer run is one thread, so one
+# target at a time would leave a core idle for the whole stage.
+jobs_at_once=${FUZZ_JOBS:-2}
+rm -f "$build_dir"/fuzz_*.status
+running=0
+for name in "${targets[@]}"; do
+  echo "fuzz: $name for ${seconds} s"
+  run_target "$name" &
+  if (( ++running >= jobs_at_once )); then
+    wait -n
+    running=$((running - 1))
+  fi
+done
+wait
+
+failed=()
+for name in "${targets[@]}"; do
+  status=$(cat "$build_dir/fuzz_$name.status" 2>/dev/null || echo 1)
+  artifacts="$build_dir/artifacts/$name/"
+  echo -n "fuzz: $name: "
   grep -E '^(stat::number_of_executed_units|stat::peak_rss_mb)|^#[0-9]+.*DONE' \
     "$build_dir/fuzz_$name.log" | tr '\n' ' '
   echo
