@@ -87,8 +87,9 @@ if [[ $build_status -ne 0 && $build_status -ne 124 ]]; then
 elif [[ $build_status -eq 124 ]]; then
   not_run+=("fuzz (the build did not finish within the budget)")
 else
-  # scripts/fuzz.sh runs two targets at once: the five take three rounds.
-  rounds=$(( (${#fuzz_targets[@]} + 1) / 2 ))
+  # scripts/fuzz.sh runs FUZZ_JOBS (2) targets at once: the five take three rounds.
+  fuzz_jobs=${FUZZ_JOBS:-2}
+  rounds=$(( (${#fuzz_targets[@]} + fuzz_jobs - 1) / fuzz_jobs ))
   share=$(( ($(remaining) - 120) / rounds ))
   seconds=$(( share < ${FUZZ_SECONDS:-60} ? share : ${FUZZ_SECONDS:-60} ))
   if (( seconds < 10 )); then
