@@ -4,7 +4,7 @@
 #   1. make test        the README's test command (installs what it needs, builds, every test);
 #                       always run whole: the budget never cuts it.
 #   2. fuzz             the clang ASan + UBSan build's five libFuzzer targets (build-asan/, shared
-#                       with stage 3), each for FUZZ_SECONDS (60), two at once, shortened to
+#                       with stage 3), each for FUZZ_SECONDS (60), in two lanes, shortened to
 #                       share what is left of the budget when that is less (at least 10 s each,
 #                       else not run).
 #   3. sanitizers       the gtest binaries of `make test-sanitize`, cheapest first, each built and
@@ -87,10 +87,10 @@ if [[ $build_status -ne 0 && $build_status -ne 124 ]]; then
 elif [[ $build_status -eq 124 ]]; then
   not_run+=("fuzz (the build did not finish within the budget)")
 else
-  # scripts/fuzz.sh runs FUZZ_JOBS (2) targets at once: the five take three rounds.
+  # scripts/fuzz.sh runs the targets in FUZZ_JOBS (2) equal lanes at once: five targets of S
+  # seconds take 5 S / 2.
   fuzz_jobs=${FUZZ_JOBS:-2}
-  rounds=$(( (${#fuzz_targets[@]} + fuzz_jobs - 1) / fuzz_jobs ))
-  share=$(( ($(remaining) - 120) / rounds ))
+  share=$(( ($(remaining) - 120) * fuzz_jobs / ${#fuzz_targets[@]} ))
   seconds=$(( share < ${FUZZ_SECONDS:-60} ? share : ${FUZZ_SECONDS:-60} ))
   if (( seconds < 10 )); then
     not_run+=("fuzz (${share} s per target left)")
