@@ -8,7 +8,7 @@
 #   make test-tsan      the threaded gtests and the node rostests under ThreadSanitizer (clang 14,
 #                       build-tsan/; not in CI: doc/hardening.md)
 #   make ci             what CI runs (.ci/run): make test, then fuzzing and the sanitizer suite
-#                       within a 38-minute budget (scripts/ci_all_stages.sh)
+#                       within a 39-minute budget (scripts/ci_all_stages.sh)
 BUILD_DIR ?= build
 JOBS ?= 2
 FUZZ_SECONDS ?= 60
