@@ -54,3 +54,21 @@ run_gtest() {
 has_failed_case() {
   grep -q '<failure' "$1/$2".*xml 2>/dev/null
 }
+
+# use_quick_model_cache BUILD: exports VDC_QUICK_MODEL_CACHE, a folder of BUILD where the first
+# process that needs the quick mug model (test/support/quick_mug_model.h) trains and saves it and
+# every other process loads it. Emptied when a library that trains the model, or its recipe,
+# is newer than the cache's stamp.
+use_quick_model_cache() {
+  local cache=$1/quick_model_cache
+  local stamp=$cache/libraries_older_than_this
+  if [[ -f "$stamp" && -n "$(find "$1/devel/lib" -maxdepth 1 -newer "$stamp" \
+      \( -name 'libvdc_common.so' -o -name 'libvdc_geometry.so' -o -name 'libvdc_features.so' \
+      -o -name 'libvdc_learning.so' -o -name 'libvdc_informativeness.so' \
+      -o -name 'libvdc_training.so' \); find test/support/quick_mug_model.h -newer "$stamp")" ]]; then
+    rm -rf "$cache"
+  fi
+  mkdir -p "$cache"
+  [[ -f "$stamp" ]] || touch "$stamp"
+  export VDC_QUICK_MODEL_CACHE=$PWD/$cache
+}

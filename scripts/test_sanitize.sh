@@ -35,20 +35,9 @@ export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}
 # passive).
 export OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-passive}
 
-# The quick mug model the estimation and evaluation tests share (test/support/quick_mug_model.h):
-# trained once under ASan (about 50 s) instead of once per shard of each binary, and kept until a
-# library that trains it or its recipe changes.
-model_cache=$build_dir/quick_model_cache
-cache_stamp=$model_cache/libraries_older_than_this
-if [[ -f "$cache_stamp" && -n "$(find "$build_dir/devel/lib" -maxdepth 1 -newer "$cache_stamp" \
-    \( -name 'libvdc_common.so' -o -name 'libvdc_geometry.so' -o -name 'libvdc_features.so' \
-    -o -name 'libvdc_learning.so' -o -name 'libvdc_informativeness.so' \
-    -o -name 'libvdc_training.so' \); find test/support/quick_mug_model.h -newer "$cache_stamp")" ]]; then
-  rm -rf "$model_cache"
-fi
-mkdir -p "$model_cache"
-[[ -f "$cache_stamp" ]] || touch "$cache_stamp"
-export VDC_QUICK_MODEL_CACHE=$PWD/$model_cache
+# The quick mug model the estimation and evaluation tests share: trained once under ASan (about
+# 50 s) instead of once per shard of each binary.
+use_quick_model_cache "$build_dir"
 
 results="$build_dir/test_results_sanitize"
 rm -rf "$results"

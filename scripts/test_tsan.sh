@@ -21,12 +21,15 @@ export PATH=/usr/bin:/bin:$PATH
 export ROS_HOSTNAME=${ROS_HOSTNAME:-localhost}
 
 gtests=(vdc_refinement_tests vdc_estimation_tests vdc_ros_tests)
-rostests=(estimator_stream estimator_bad_input estimator_reconfigure nodelets_closed_loop)
+# Every node rostest but rviz_screenshot (rviz is not built under TSan: it only draws).
+rostests=(estimator_stream estimator_bad_input estimator_reconfigure estimator_convergence
+  estimator_startup server_startup server_bad_requests server_reconfigure camera_startup
+  simulated_camera nodelets_closed_loop)
 # What the rostests run: the nodes, the nodelet library, the C++ test nodes and the tool that
 # trains the quick mug model (the target vdc_test_model).
 rostest_targets=(orientation_estimator simulated_depth_camera informativeness_server
-  view_direction_classification_nodelets estimator_bad_input_test nodelets_closed_loop_test
-  vdc_test_model view_direction_classification_generate_messages_py
+  view_direction_classification_nodelets estimator_bad_input_test estimator_convergence_test
+  nodelets_closed_loop_test vdc_test_model view_direction_classification_generate_messages_py
   view_direction_classification_gencfg)
 if [[ ${1:-} == --gtests-only ]]; then
   rostests=()
@@ -68,6 +71,8 @@ export TSAN_OPTIONS=${TSAN_OPTIONS:-$default_options:suppressions=$PWD/test/sani
 start=$(date +%s)
 SANITIZE=thread SANITIZE_BUILD_DIR=$build_dir scripts/sanitized_build.sh "${targets[@]}" || exit 1
 echo "tsan: build in $(( $(date +%s) - start )) s"
+# The estimation tests' quick mug model: trained once, not once per shard.
+use_quick_model_cache "$build_dir"
 results="$build_dir/test_results_tsan"
 rm -rf "$results"
 mkdir -p "$results"

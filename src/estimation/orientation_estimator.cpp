@@ -110,6 +110,7 @@ void checkParameters(const EstimatorParameters& p) {
   }
   checkSegmentationParameters(p.segmentation);
   checkFrameSelectionParameters(p.selection);
+  checkBeliefCheckParameters(p.belief_check);
 }
 
 }  // namespace
@@ -157,13 +158,20 @@ void OrientationEstimator::setParameters(EstimatorParameters parameters) {
   sighting.see_through_distance = std::max(0.25 * extent_.sizes.minCoeff(), 0.01);
   sighting.table_distance = segmentation.plane_distance;
   // Rebuilt on every call (a reconfigure is rare; its cost is the refiner's set-up).
-  std::shared_ptr<const PoseRefiner> refiner;
+  std::shared_ptr<const PoseRefiner> refiner, search_refiner;
   if (parameters.refinement == RefinementMode::kIcp) {
     refiner = std::make_shared<const PoseRefiner>(*model_, parameters.refinement_parameters);
+    if (parameters.belief_check.search_below_score > 0.0) {
+      search_refiner = std::make_shared<const PoseRefiner>(
+          *refiner, searchRefinementParameters(parameters.refinement_parameters,
+                                               static_cast<int>(model_->view_directions.size()),
+                                               parameters.belief_check));
+    }
   }
 
   filter_.setOptions(filter_options);
   refiner_ = std::move(refiner);
+  search_refiner_ = std::move(search_refiner);
   kappa_ = parameters.kappa > 0.0 ? parameters.kappa : defaultViewConcentration(spacing);
   min_view_separation_ =
       selection.min_view_separation < 0.0 ? 0.5 * spacing : selection.min_view_separation;
@@ -283,7 +291,9 @@ ViewUpdate OrientationEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cl
   last_camera_position_world_ = world_from_camera.translation();
   const Clock::time_point fused = Clock::now();
   result.timing.fusion = millisecondsBetween(measured, fused);
-  if (refiner_) refineAfterFusion(object.points, world_from_camera, &result);
+  if (refiner_) {
+    refineAfterFusion(object.points, world_from_camera, measurement, line_of_sight, &result);
+  }
   const Clock::time_point refined = Clock::now();
   result.timing.refinement = millisecondsBetween(fused, refined);
   result.timing.total = millisecondsBetween(start, refined);
@@ -292,6 +302,8 @@ ViewUpdate OrientationEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cl
 
 void OrientationEstimator::refineAfterFusion(const pcl::PointCloud<pcl::PointXYZ>& object_points,
                                              const Eigen::Isometry3d& world_from_camera,
+                                             const BinghamMixture& measurement,
+                                             const Eigen::Vector4d& line_of_sight,
                                              ViewUpdate* result) {
   // This view first, then the latest earlier ones (thinned to the refiner's voxel): the object
   // stands still and the camera poses are known, so a pose must fit them all.
@@ -300,11 +312,22 @@ void OrientationEstimator::refineAfterFusion(const pcl::PointCloud<pcl::PointXYZ
   view.world_from_camera = world_from_camera;
   std::vector<RefinementView> views{view};
   views.insert(views.end(), refined_views_.begin(), refined_views_.end());
-  const std::optional<Eigen::Vector3d> position = positionEstimate();
-  const RefinementResult refinement =
-      refiner_->refine(belief(), position.value_or(result->observed_centroid_world), views);
+  const Eigen::Vector3d position = positionEstimate().value_or(result->observed_centroid_world);
+  RefinementResult refinement = refiner_->refine(belief(), position, views);
   rememberRefinedView(view);
   result->refinement_skip_reason = refinement.skip_reason;
+  if (search_refiner_ && !refinement.skipped()) {
+    check_views_.push_front(thinnedView(view, parameters_.refinement_parameters.scene_voxel));
+    while (static_cast<int>(check_views_.size()) > parameters_.belief_check.check_views) {
+      check_views_.pop_back();
+    }
+    const bool poor_fit =
+        refinement.kept.empty() ||
+        refinement.kept.front().score.score() < parameters_.belief_check.search_below_score;
+    if (poor_fit) {
+      searchBeyondBelief(views, position, measurement, line_of_sight, &refinement, result);
+    }
+  }
   if (refinement.kept.empty()) return;
   filter_.update(refinedMeasurement(refinement, parameters_.refined_fusion));
   map_cache_.reset();
@@ -313,6 +336,51 @@ void OrientationEstimator::refineAfterFusion(const pcl::PointCloud<pcl::PointXYZ
   refined_position_ = refinement.kept.front().world_from_object.translation();
   refined_position_covariance_ = refinement.kept.front().position_covariance;
   result->refined_poses = static_cast<int>(refinement.kept.size());
+}
+
+void OrientationEstimator::searchBeyondBelief(const std::vector<RefinementView>& views,
+                                              const Eigen::Vector3d& position,
+                                              const BinghamMixture& measurement,
+                                              const Eigen::Vector4d& line_of_sight,
+                                              RefinementResult* refinement, ViewUpdate* result) {
+  result->searched = true;
+  RefinementResult search = search_refiner_->refine(
+      searchBelief(line_of_sight, views.front().world_from_camera), position, views);
+  if (search.kept.empty()) return;
+  // Without a verified pose of its own, the belief's MAP placed at the position estimate.
+  Eigen::Isometry3d belief_pose = Eigen::Isometry3d::Identity();
+  if (refinement->kept.empty()) {
+    belief_pose.linear() = quaternionToRotationMatrix(mapOrientation());
+    belief_pose.translation() = position;
+  } else {
+    belief_pose = refinement->kept.front().world_from_object;
+  }
+  const std::vector<RefinementView> latest(check_views_.begin(), check_views_.end());
+  const BeliefVerdict verdict =
+      judgeBelief(*refiner_, latest, belief_pose, search.kept.front().world_from_object,
+                  parameters_.belief_check);
+  if (!verdict.contradicted) return;
+  char reason[200];
+  std::snprintf(reason, sizeof(reason),
+                "the geometry contradicted the belief: over the latest %zu views its best pose "
+                "verifies at %.3f, a pose outside it at %.3f",
+                latest.size(), verdict.belief_score, verdict.search_score);
+  result->rebuild_reason = reason;
+  // The earlier views' evidence is in the belief only as the belief: it goes with it, and the
+  // belief starts again from this view's measurement and the search's poses.
+  filter_.reset();
+  filter_.update(measurement);
+  *refinement = std::move(search);
+}
+
+BinghamMixture OrientationEstimator::searchBelief(
+    const Eigen::Vector4d& line_of_sight, const Eigen::Isometry3d& world_from_camera) const {
+  const int directions = static_cast<int>(model_->view_directions.size());
+  const Eigen::VectorXd uniform = Eigen::VectorXd::Constant(directions, 1.0 / directions);
+  const BinghamMixture camera_frame =
+      viewMeasurement(uniform, model_->view_directions, kappa_, 0.0, 0.0);
+  const Eigen::Vector4d q_WC = fromEigenQuaternion(Eigen::Quaterniond(world_from_camera.linear()));
+  return cameraToFixedFrame(camera_frame.rotated(line_of_sight), q_WC);
 }
 
 void OrientationEstimator::rememberRefinedView(const RefinementView& view) {
@@ -420,6 +488,7 @@ void OrientationEstimator::reset() {
   refined_position_.reset();
   refined_position_covariance_.reset();
   refined_views_.clear();
+  check_views_.clear();
 }
 
 Eigen::Vector4d OrientationEstimator::mapOrientation() const {

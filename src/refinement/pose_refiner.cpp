@@ -301,7 +301,8 @@ std::vector<RefinedPose> placedStarts(const BinghamMixture& belief, const Eigen:
                                   camera_position, &visible);
     pose.world_from_object = pose.start;
     pose.orientation = pose.start_orientation;
-    pose.rejection = "screened out: its start fits worse than its component's " +
+    pose.rejection = std::string("screened out: its start fits worse than ") +
+                     (parameters.screen_per_component ? "its component's " : "the ") +
                      std::to_string(parameters.max_refined) + " best";
     starts.push_back(pose);
   }
@@ -650,6 +651,16 @@ PoseRefiner::PoseRefiner(const ModelBundle& model, RefinementParameters paramete
   }
 }
 
+PoseRefiner::PoseRefiner(const PoseRefiner& other, RefinementParameters parameters)
+    : surface_(other.surface_), polish_surface_(other.polish_surface_), parameters_(parameters) {
+  checkParameters(parameters_);
+  if (parameters_.model_spacing != other.parameters_.model_spacing ||
+      parameters_.polish_model_spacing != other.parameters_.polish_model_spacing ||
+      (parameters_.polish_iterations > 0) != (other.parameters_.polish_iterations > 0)) {
+    throw Error("a refiner sharing another's surfaces needs its model and polish spacings");
+  }
+}
+
 RefinementResult PoseRefiner::refine(const BinghamMixture& belief, const Eigen::Vector3d& position,
                                      const std::vector<RefinementView>& views) const {
   const auto start_time = std::chrono::steady_clock::now();
@@ -680,7 +691,7 @@ RefinementResult PoseRefiner::refine(const BinghamMixture& belief, const Eigen::
   std::vector<int> components;
   for (const RefinedPose& pose : result.tried) {
     distances.push_back(pose.screening_distance);
-    components.push_back(pose.component);
+    components.push_back(parameters_.screen_per_component ? pose.component : 0);
   }
 
   const PoseVerifier verifier(surface_, thinnedViews(observation.views, parameters_.scene_voxel),

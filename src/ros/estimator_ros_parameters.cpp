@@ -72,7 +72,13 @@ ParameterTable<EstimatorRosParameters> makeTable() {
       .add("refinement_depth_noise_at_1m",
            fieldPath(&P::core, &E::refinement_parameters, &R::verification,
                      &VerificationParameters::depth_noise_at_1m),
-           numberAtLeast(0.0, "0: the fixed tolerances alone"));
+           numberAtLeast(0.0, "0: the fixed tolerances alone"))
+      .add("refinement_search_below_score",
+           fieldPath(&P::core, &E::belief_check, &BeliefCheckParameters::search_below_score),
+           numberIn(0.0, 1.0, true))
+      .add("refinement_rebuild_margin",
+           fieldPath(&P::core, &E::belief_check, &BeliefCheckParameters::rebuild_margin),
+           numberIn(0.0, 1.0, true));
   // Segmentation (its region of interest is in the fixed frame).
   using S = SegmentationParameters;
   const auto segmentation = [](auto member) {

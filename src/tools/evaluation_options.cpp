@@ -194,6 +194,13 @@ void addEvaluateOptions(CLI::App& command, EvaluateOptions& options) {
       ->capture_default_str()
       ->check(CLI::Range(1, 100));
   addSetting(
+      command, options, "--search-below-score",
+      [](auto& s) -> auto& { return s.estimator.belief_check.search_below_score; },
+      "/estimator/search_below_score",
+      "a poorer best refined fit starts a search beyond the belief (0: never)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
+  addSetting(
       command, options, "--belief-weight-floor",
       [](auto& s) -> auto& { return s.estimator.belief_weight_floor; },
       "/estimator/belief_weight_floor",

@@ -1,10 +1,12 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 #include <string>
 #include <utility>
 
 #include "support/quick_mug_model.h"
+#include "view_direction_classification/common/error.h"
 #include "view_direction_classification/common/quaternion.h"
 #include "view_direction_classification/common/rotation_error.h"
 #include "view_direction_classification/estimation/orientation_estimator.h"
@@ -110,6 +112,91 @@ TEST_F(EstimatorRefinementTest, ASkippedRefinementLeavesTheBeliefAsWithout) {
   EXPECT_LT(rotationErrorDeg(skipped.mapOrientation(), plain.mapOrientation()), 1e-9);
   EXPECT_LT((*skipped.positionEstimate() - *plain.positionEstimate()).norm(), 1e-12);
   EXPECT_FALSE(skipped.positionCovariance().has_value());
+}
+
+// A view of the mug from above its rim (its opening in sight) with noise, at the true pose.
+std::pair<pcl::PointCloud<pcl::PointXYZ>, Eigen::Isometry3d> viewFromAbove(
+    const Eigen::Isometry3d& world_from_object) {
+  const Eigen::Isometry3d camera_from_object =
+      cameraFromObject(Eigen::Vector3d(-0.4, 0.3, 0.9).normalized(), 0.6, 0.4);
+  std::mt19937 rng(11);
+  return {DepthRenderer(makeMug()).render(camera_from_object, DepthNoiseModel{true}, &rng),
+          world_from_object * camera_from_object.inverse()};
+}
+
+// A side view of the mug with its handle away from the camera, with noise.
+std::pair<pcl::PointCloud<pcl::PointXYZ>, Eigen::Isometry3d> viewFromSide(
+    const Eigen::Isometry3d& world_from_object) {
+  const Eigen::Isometry3d camera_from_object =
+      cameraFromObject(Eigen::Vector3d(-1.0, -0.2, 0.1).normalized(), 0.6, 2.0);
+  std::mt19937 rng(13);
+  return {DepthRenderer(makeMug()).render(camera_from_object, DepthNoiseModel{true}, &rng),
+          world_from_object * camera_from_object.inverse()};
+}
+
+TEST_F(EstimatorRefinementTest, AViewTheSureBeliefCannotExplainRebuildsIt) {
+  // The first views' camera poses are reported as if the mug stood upside down (half a turn
+  // about its x axis through its origin): the belief becomes sure of that pose. A view from above
+  // then sees the opening where that pose has the base.
+  Eigen::Isometry3d upside_down = Eigen::Isometry3d::Identity();
+  upside_down.linear() = Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  const Eigen::Isometry3d wrong = worldFromObject() * upside_down;
+  const auto [first, world_from_camera] = handleView();
+  const Eigen::Isometry3d reported = wrong * worldFromObject().inverse() * world_from_camera;
+  const auto [side, side_reported] = viewFromSide(wrong);
+  const auto [second, second_pose] = viewFromAbove(worldFromObject());
+
+  OrientationEstimator checked(model(), withIcp());
+  EstimatorParameters unchecked_parameters = withIcp();
+  unchecked_parameters.belief_check.search_below_score = 0.0;
+  OrientationEstimator unchecked(model(), unchecked_parameters);
+  for (OrientationEstimator* estimator : {&checked, &unchecked}) {
+    ASSERT_TRUE(estimator->update(first, reported).updated);
+    ASSERT_TRUE(estimator->update(side, side_reported).updated);
+    ASSERT_GT(rotationErrorDeg(estimator->mapOrientation(), truth()), 170.0);
+  }
+  const ViewUpdate update = checked.update(second, second_pose);
+  ASSERT_TRUE(update.updated) << update.skip_reason;
+  EXPECT_TRUE(update.searched);
+  EXPECT_NE(update.rebuild_reason.find("contradicted the belief"), std::string::npos);
+  EXPECT_LT(rotationErrorDeg(checked.mapOrientation(), truth()), 5.0);
+  EXPECT_LT((*checked.positionEstimate() - worldFromObject().translation()).norm(), 0.005);
+
+  // Without the check the belief stays sure of the upside-down mug.
+  const ViewUpdate stuck = unchecked.update(second, second_pose);
+  EXPECT_FALSE(stuck.searched);
+  EXPECT_TRUE(stuck.rebuild_reason.empty());
+  EXPECT_GT(rotationErrorDeg(unchecked.mapOrientation(), truth()), 90.0);
+}
+
+TEST_F(EstimatorRefinementTest, ViewsTheBeliefExplainsNeverRebuildIt) {
+  const auto [first, world_from_camera] = handleView();
+  const auto [second, second_pose] = viewFromAbove(worldFromObject());
+  OrientationEstimator estimator(model(), withIcp());
+  for (const ViewUpdate& update :
+       {estimator.update(first, world_from_camera), estimator.update(second, second_pose)}) {
+    ASSERT_TRUE(update.updated) << update.skip_reason;
+    EXPECT_TRUE(update.rebuild_reason.empty()) << update.rebuild_reason;
+  }
+  EXPECT_LT(rotationErrorDeg(estimator.mapOrientation(), truth()), 5.0);
+}
+
+TEST(BeliefCheckParametersTest, RefusesNonsense) {
+  const auto refused = [](auto change) {
+    BeliefCheckParameters parameters;
+    change(&parameters);
+    EXPECT_THROW(checkBeliefCheckParameters(parameters), Error);
+  };
+  EXPECT_NO_THROW(checkBeliefCheckParameters(BeliefCheckParameters{}));
+  refused([](BeliefCheckParameters* p) { p->search_below_score = 1.5; });
+  refused([](BeliefCheckParameters* p) { p->search_below_score = std::nan(""); });
+  refused([](BeliefCheckParameters* p) { p->rebuild_margin = -0.1; });
+  refused([](BeliefCheckParameters* p) { p->check_views = 0; });
+  refused([](BeliefCheckParameters* p) { p->search_girdle_step_deg = 0.0; });
+  refused([](BeliefCheckParameters* p) { p->search_max_refined = 0; });
+  EstimatorParameters estimator;
+  estimator.belief_check.check_views = 0;
+  EXPECT_THROW(OrientationEstimator(test::quickMugModel(), estimator), Error);
 }
 
 }  // namespace

@@ -75,6 +75,8 @@ class EstimatorStartup(unittest.TestCase):
                                         ("refinement_min_score", 1.5, "1.5"),
                                         ("refinement_restart_seeds", -1, "-1"),
                                         ("refinement_views", 0, "0"),
+                                        ("refinement_search_below_score", -0.1, "-0.1"),
+                                        ("refinement_rebuild_margin", 2.0, "2"),
                                         ("refinement_depth_noise_at_1m", -0.001, "-0.001")]:
             assert_refused(self, NODE, ["~" + parameter, "got %s." % shown],
                            "_model:=/nonexistent.h5", preset={parameter: value})

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "view_direction_classification/bingham/bingham_mixture.h"
+#include "view_direction_classification/estimation/belief_check.h"
 #include "view_direction_classification/estimation/belief_spread.h"
 #include "view_direction_classification/estimation/frame_selection.h"
 #include "view_direction_classification/estimation/object_segmentation.h"
@@ -73,6 +74,9 @@ struct EstimatorParameters {
   // pose's covariance still comes from this view's own fit. 1: this view alone; 3 was better by
   // some medians and worse by others at 60 % more refinement time (doc/evaluation.md).
   int refinement_views = 1;
+  // What happens when a view's geometry contradicts the belief (belief_check.h): a search beyond
+  // the belief's hypotheses and, where it finds a clearly better pose, the belief rebuilt.
+  BeliefCheckParameters belief_check;
 };
 
 // Wall-clock time of each stage of one update [ms].
@@ -134,6 +138,11 @@ struct ViewUpdate {
   // refinement_skip_reason then says why when the input was bad).
   int refined_poses = 0;
   std::string refinement_skip_reason;
+  // The belief's best pose fitted this view poorly, so a search beyond its hypotheses ran
+  // (belief_check.h); rebuild_reason non-empty: the search's pose fitted the latest views clearly
+  // better, and the belief was rebuilt from this view (says by how much).
+  bool searched = false;
+  std::string rebuild_reason;
   UpdateTiming timing;
 };
 
@@ -205,8 +214,21 @@ class OrientationEstimator {
   void resetForMovedObject(double shift, ViewUpdate* result);
   // The refinement after a fused view: verified poses fused as a measurement (the belief is
   // unchanged when none is verified or the input is bad).
+  // measurement: the view's, in the fixed frame (a rebuilt belief starts from it);
+  // line_of_sight: q_CL, the camera frame's turn onto the ray to the object.
   void refineAfterFusion(const pcl::PointCloud<pcl::PointXYZ>& object_points,
-                         const Eigen::Isometry3d& world_from_camera, ViewUpdate* result);
+                         const Eigen::Isometry3d& world_from_camera,
+                         const BinghamMixture& measurement, const Eigen::Vector4d& line_of_sight,
+                         ViewUpdate* result);
+  // The search after a poor fit (belief_check.h): replaces *refinement with the search's result
+  // and rebuilds the belief from `measurement` when the geometry contradicts the belief.
+  void searchBeyondBelief(const std::vector<RefinementView>& views, const Eigen::Vector3d& position,
+                          const BinghamMixture& measurement, const Eigen::Vector4d& line_of_sight,
+                          RefinementResult* refinement, ViewUpdate* result);
+  // The search's hypotheses: every training direction's girdle along the line of sight, equally
+  // weighted, in the fixed frame.
+  BinghamMixture searchBelief(const Eigen::Vector4d& line_of_sight,
+                              const Eigen::Isometry3d& world_from_camera) const;
   // Keeps the view (thinned) among the refinement_views - 1 latest for the next refinements.
   void rememberRefinedView(const RefinementView& view);
   // Fixed-frame point the viewing directions are measured from: the position estimate, or the
@@ -228,6 +250,11 @@ class OrientationEstimator {
   std::optional<Eigen::Vector3d> refined_position_;
   std::optional<Eigen::Matrix3d> refined_position_covariance_;
   std::deque<RefinementView> refined_views_;  // latest first, object points voxel-filtered
+  // With belief_check.search_below_score > 0: the search's refiner (the same surfaces), and
+  // the latest belief_check.check_views views (this one first, voxel-filtered) both poses are
+  // judged on.
+  std::shared_ptr<const PoseRefiner> search_refiner_;
+  std::deque<RefinementView> check_views_;
   // Only when selection.min_information_gain > 0.
   std::shared_ptr<const ViewUtilityScorer> gain_scorer_;
   // The MAP costs a search over every component: computed once per belief, on first request;

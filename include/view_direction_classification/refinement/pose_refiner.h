@@ -28,6 +28,9 @@ struct RefinementParameters {
   // start). ICP is the cost
   // (milliseconds per start), screening a fraction of a millisecond per start.
   int max_refined = 3;
+  // false: the max_refined best starts over all components together (a search over many
+  // equally likely girdles, where per component would align dozens).
+  bool screen_per_component = true;
   int screening_points = 200;
   // An observation whose bounding box diagonal exceeds this many model diagonals is not (only)
   // the object: skipped.
@@ -174,6 +177,9 @@ class PoseRefiner {
   PoseRefiner(std::shared_ptr<const ModelSurface> surface, RefinementParameters parameters = {});
   // The bundle's surface set S (with its normals and extent) thinned to model_spacing.
   PoseRefiner(const ModelBundle& model, RefinementParameters parameters = {});
+  // other's surfaces (shared, not copied: same model_spacing and polish_model_spacing) with
+  // other settings. Throws vdc::Error for invalid parameters or other spacings.
+  PoseRefiner(const PoseRefiner& other, RefinementParameters parameters);
 
   // belief: over q_WO (fixed frame). position: the current estimate of the object origin in the
   // fixed frame. views: the object's points (camera frames) with their camera poses; several
@@ -185,6 +191,7 @@ class PoseRefiner {
 
   const RefinementParameters& parameters() const { return parameters_; }
   const ModelSurface& surface() const { return *surface_; }
+  const std::shared_ptr<const ModelSurface>& sharedSurface() const { return surface_; }
 
  private:
   std::shared_ptr<const ModelSurface> surface_;
