@@ -654,9 +654,11 @@ PoseRefiner::PoseRefiner(const ModelBundle& model, RefinementParameters paramete
 PoseRefiner::PoseRefiner(const PoseRefiner& other, RefinementParameters parameters)
     : surface_(other.surface_), polish_surface_(other.polish_surface_), parameters_(parameters) {
   checkParameters(parameters_);
-  if (parameters_.model_spacing != other.parameters_.model_spacing ||
-      parameters_.polish_model_spacing != other.parameters_.polish_model_spacing ||
-      (parameters_.polish_iterations > 0) != (other.parameters_.polish_iterations > 0)) {
+  const bool polish_surface_differs =
+      parameters_.polish_iterations > 0 &&
+      (other.parameters_.polish_iterations <= 0 ||
+       parameters_.polish_model_spacing != other.parameters_.polish_model_spacing);
+  if (parameters_.model_spacing != other.parameters_.model_spacing || polish_surface_differs) {
     throw Error("a refiner sharing another's surfaces needs its model and polish spacings");
   }
 }

@@ -169,7 +169,7 @@ void OrientationEstimatorRos::processCloud(const sensor_msgs::PointCloud2& cloud
   const ViewUpdate update = estimator_->update(xyz, world_from_camera, cloud.header.stamp.toSec());
   if (!update.reset_reason.empty()) announceReset(update.reset_reason);
   if (!update.rebuild_reason.empty()) {
-    ROS_WARN_THROTTLE_NAMED(2.0, private_node_.getNamespace(),
+    ROS_INFO_THROTTLE_NAMED(2.0, private_node_.getNamespace(),
                             "%s: belief rebuilt from this view: %s",
                             private_node_.getNamespace().c_str(), update.rebuild_reason.c_str());
   }
