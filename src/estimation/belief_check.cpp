@@ -39,6 +39,13 @@ RefinementParameters searchRefinementParameters(const RefinementParameters& base
   return search;
 }
 
+double verifiedScore(const PoseRefiner& refiner, const std::vector<RefinementView>& views,
+                     const Eigen::Isometry3d& pose) {
+  return PoseVerifier(refiner.sharedSurface(), views, refiner.parameters().verification)
+      .score(pose)
+      .score();
+}
+
 BeliefVerdict judgeBelief(const PoseRefiner& refiner, const std::vector<RefinementView>& views,
                           const Eigen::Isometry3d& belief_pose,
                           const Eigen::Isometry3d& search_pose,

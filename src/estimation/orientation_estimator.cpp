@@ -321,11 +321,20 @@ void OrientationEstimator::refineAfterFusion(const pcl::PointCloud<pcl::PointXYZ
     while (static_cast<int>(check_views_.size()) > parameters_.belief_check.check_views) {
       check_views_.pop_back();
     }
-    const bool poor_fit =
-        refinement.kept.empty() ||
-        refinement.kept.front().score.score() < parameters_.belief_check.search_below_score;
-    if (poor_fit) {
-      searchBeyondBelief(views, position, measurement, line_of_sight, &refinement, result);
+    // The belief's best pose: refinement's, or without one the MAP at the position estimate.
+    Eigen::Isometry3d belief_pose = Eigen::Isometry3d::Identity();
+    double belief_score = 0.0;
+    if (refinement.kept.empty()) {
+      belief_pose.linear() = quaternionToRotationMatrix(mapOrientation());
+      belief_pose.translation() = position;
+      belief_score = verifiedScore(*refiner_, {check_views_.front()}, belief_pose);
+    } else {
+      belief_pose = refinement.kept.front().world_from_object;
+      belief_score = refinement.kept.front().score.score();
+    }
+    if (belief_score < parameters_.belief_check.search_below_score) {
+      searchBeyondBelief(views, position, belief_pose, measurement, line_of_sight, &refinement,
+                         result);
     }
   }
   if (refinement.kept.empty()) return;
@@ -340,6 +349,7 @@ void OrientationEstimator::refineAfterFusion(const pcl::PointCloud<pcl::PointXYZ
 
 void OrientationEstimator::searchBeyondBelief(const std::vector<RefinementView>& views,
                                               const Eigen::Vector3d& position,
+                                              const Eigen::Isometry3d& belief_pose,
                                               const BinghamMixture& measurement,
                                               const Eigen::Vector4d& line_of_sight,
                                               RefinementResult* refinement, ViewUpdate* result) {
@@ -347,14 +357,6 @@ void OrientationEstimator::searchBeyondBelief(const std::vector<RefinementView>&
   RefinementResult search = search_refiner_->refine(
       searchBelief(line_of_sight, views.front().world_from_camera), position, views);
   if (search.kept.empty()) return;
-  // Without a verified pose of its own, the belief's MAP placed at the position estimate.
-  Eigen::Isometry3d belief_pose = Eigen::Isometry3d::Identity();
-  if (refinement->kept.empty()) {
-    belief_pose.linear() = quaternionToRotationMatrix(mapOrientation());
-    belief_pose.translation() = position;
-  } else {
-    belief_pose = refinement->kept.front().world_from_object;
-  }
   const std::vector<RefinementView> latest(check_views_.begin(), check_views_.end());
   const BeliefVerdict verdict =
       judgeBelief(*refiner_, latest, belief_pose, search.kept.front().world_from_object,

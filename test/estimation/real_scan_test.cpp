@@ -77,6 +77,8 @@ TEST(RealScanTest, OneRealViewOfTheWholeSceneGivesTheMugsPose) {
   RecordProperty("axis_error_deg", std::to_string(axis_error));
   RecordProperty("position_error_mm", std::to_string(position_error_mm));
   RecordProperty("refinement_ms", std::to_string(update.timing.refinement));
+  RecordProperty("searched_beyond_belief", update.searched ? "yes" : "no");
+  RecordProperty("belief_rebuilt", update.rebuild_reason.empty() ? "no" : update.rebuild_reason);
   EXPECT_LT(axis_error, 5.0);
   EXPECT_LT(rotation_error, 10.0);
   EXPECT_LT(position_error_mm, 10.0);

@@ -16,8 +16,10 @@ namespace vdc {
 // belief looks for a better one; where that pose also fits the latest views clearly better, the
 // belief is rebuilt from this view.
 struct BeliefCheckParameters {
-  // The search runs when refinement kept no pose or its best verifies below this on the view (a
-  // right pose of a whole view verifies at 0.98-1.00); 0: never.
+  // The search runs when refinement's best pose verifies below this on the view, or it kept none
+  // and the belief's MAP (at the position estimate) verifies below this (a right pose of a whole
+  // view verifies at 0.98-1.00; refinement keeps none when ICP cannot improve on a belief that
+  // is already right); 0: never.
   double search_below_score = 0.95;
   // The search's best pose rebuilds the belief when its verification over the latest check_views
   // views (this one included) beats the belief's best pose's by more than this.
@@ -39,6 +41,11 @@ void checkBeliefCheckParameters(const BeliefCheckParameters& parameters);
 // girdles together.
 RefinementParameters searchRefinementParameters(const RefinementParameters& base, int directions,
                                                 const BeliefCheckParameters& parameters);
+
+// The verification score (pose_verification.h) of `pose` over `views` together, against the
+// refiner's surface with its verification settings.
+double verifiedScore(const PoseRefiner& refiner, const std::vector<RefinementView>& views,
+                     const Eigen::Isometry3d& pose);
 
 // Verification of the belief's and the search's best poses over the same views.
 struct BeliefVerdict {

@@ -220,11 +220,13 @@ class OrientationEstimator {
                          const Eigen::Isometry3d& world_from_camera,
                          const BinghamMixture& measurement, const Eigen::Vector4d& line_of_sight,
                          ViewUpdate* result);
-  // The search after a poor fit (belief_check.h): replaces *refinement with the search's result
-  // and rebuilds the belief from `measurement` when the geometry contradicts the belief.
+  // The search after the belief's best pose (refinement's, or its MAP) fitted poorly
+  // (belief_check.h): replaces *refinement with the search's result and rebuilds the belief
+  // from `measurement` when the geometry contradicts the belief.
   void searchBeyondBelief(const std::vector<RefinementView>& views, const Eigen::Vector3d& position,
-                          const BinghamMixture& measurement, const Eigen::Vector4d& line_of_sight,
-                          RefinementResult* refinement, ViewUpdate* result);
+                          const Eigen::Isometry3d& belief_pose, const BinghamMixture& measurement,
+                          const Eigen::Vector4d& line_of_sight, RefinementResult* refinement,
+                          ViewUpdate* result);
   // The search's hypotheses: every training direction's girdle along the line of sight, equally
   // weighted, in the fixed frame.
   BinghamMixture searchBelief(const Eigen::Vector4d& line_of_sight,
