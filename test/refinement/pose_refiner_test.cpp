@@ -160,6 +160,58 @@ TEST_F(PoseRefinerTest, ScreeningRanksTheStartNearestTheTrueRollFirst) {
   EXPECT_LT(rotationErrorDeg(result.kept[0].orientation, truth()), 2.0);
 }
 
+TEST_F(PoseRefinerTest, ScreeningOverAllComponentsAlignsOnlyTheBestOfThemAll) {
+  // Two equally weighted girdles, the right one and one of a direction 90 degrees away: per
+  // component each aligns its 2 best starts; over all components only the 2 best-screened of the
+  // 24 are aligned.
+  const RefinementView v = view(kHandleSideOn, 2.1);
+  const Eigen::Vector3d wrong = kHandleSideOn.cross(Eigen::Vector3d::UnitZ()).normalized();
+  const BinghamMixture camera_frame(
+      {0.5, 0.5}, {viewGirdle(kHandleSideOn.normalized(), 18.0), viewGirdle(wrong, 18.0)});
+  const BinghamMixture belief =
+      cameraToFixedFrame(camera_frame, orientationOf(v.world_from_camera));
+  RefinementParameters parameters;
+  parameters.hypotheses.girdle_step_deg = 30.0;
+  parameters.max_refined = 2;
+  parameters.screen_per_component = true;
+  const RefinementResult per_component =
+      PoseRefiner(*surface_, parameters).refine(belief, position(), {v});
+  std::vector<int> aligned(2, 0);
+  for (const RefinedPose& pose : beliefStarts(per_component)) {
+    if (pose.screened_in) ++aligned[static_cast<std::size_t>(pose.component)];
+  }
+  EXPECT_EQ(aligned, (std::vector<int>{2, 2}));
+
+  parameters.screen_per_component = false;
+  const RefinementResult overall =
+      PoseRefiner(*surface_, parameters).refine(belief, position(), {v});
+  std::vector<RefinedPose> starts = beliefStarts(overall);
+  ASSERT_EQ(starts.size(), 24u);
+  std::sort(starts.begin(), starts.end(), [](const RefinedPose& a, const RefinedPose& b) {
+    return a.screening_distance < b.screening_distance;
+  });
+  for (std::size_t i = 0; i < starts.size(); ++i) {
+    EXPECT_EQ(starts[i].screened_in, i < 2) << i << "-th best-screened start";
+    if (!starts[i].screened_in) {
+      EXPECT_NE(starts[i].rejection.find("worse than the 2 best"), std::string::npos);
+    }
+  }
+  ASSERT_FALSE(overall.kept.empty()) << describe(overall, truth());
+  EXPECT_LT(rotationErrorDeg(overall.kept.front().orientation, truth()), 2.0)
+      << describe(overall, truth());
+}
+
+TEST_F(PoseRefinerTest, ARefinerSharingAnothersSurfacesNeedsItsSpacings) {
+  const PoseRefiner original(*surface_);
+  RefinementParameters other;
+  other.max_refined = 6;
+  const PoseRefiner sharing(original, other);
+  EXPECT_EQ(sharing.sharedSurface(), original.sharedSurface());
+  EXPECT_EQ(sharing.parameters().max_refined, 6);
+  other.model_spacing = 0.006;
+  EXPECT_THROW(PoseRefiner(original, other), Error);
+}
+
 TEST_F(PoseRefinerTest, AKeptPoseCarriesItsFitsPositionCovariance) {
   const RefinementView v = view(kHandleSideOn, 2.1);
   const RefinementResult result =

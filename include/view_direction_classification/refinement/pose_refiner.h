@@ -177,8 +177,9 @@ class PoseRefiner {
   PoseRefiner(std::shared_ptr<const ModelSurface> surface, RefinementParameters parameters = {});
   // The bundle's surface set S (with its normals and extent) thinned to model_spacing.
   PoseRefiner(const ModelBundle& model, RefinementParameters parameters = {});
-  // other's surfaces (shared, not copied: same model_spacing and polish_model_spacing) with
-  // other settings. Throws vdc::Error for invalid parameters or other spacings.
+  // other's surfaces (shared, not copied) with other settings: the same model_spacing, and the
+  // same polish_model_spacing unless these do not polish. Throws vdc::Error for invalid
+  // parameters or other spacings.
   PoseRefiner(const PoseRefiner& other, RefinementParameters parameters);
 
   // belief: over q_WO (fixed frame). position: the current estimate of the object origin in the
