@@ -213,7 +213,8 @@ class OrientationEstimator {
   // Resets and says why in result->reset_reason.
   void resetForMovedObject(double shift, ViewUpdate* result);
   // The refinement after a fused view: verified poses fused as a measurement (the belief is
-  // unchanged when none is verified or the input is bad).
+  // unchanged when none is verified or the input is bad), after a search beyond the belief where
+  // its best pose fits the view poorly, which may rebuild the belief (belief_check.h).
   // measurement: the view's, in the fixed frame (a rebuilt belief starts from it);
   // line_of_sight: q_CL, the camera frame's turn onto the ray to the object.
   void refineAfterFusion(const pcl::PointCloud<pcl::PointXYZ>& object_points,
