@@ -12,6 +12,7 @@
 #include <cmath>
 #include <numeric>
 #include <sstream>
+#include <string>
 
 namespace vdc {
 namespace {
@@ -148,6 +149,46 @@ BinghamProduct multiply(const BinghamDistribution& first, const BinghamDistribut
       first.exponentMatrix() + second.exponentMatrix(), &largest_eigenvalue);
   product.log_scale = largest_eigenvalue + product.distribution.logNormalizer() -
                       first.logNormalizer() - second.logNormalizer();
+  return product;
+}
+
+namespace {
+
+// Whether `sharp` is at least `ratio` times more concentrated along each axis than `wide` along
+// its tightest one (concentrations are sorted ascending: z1 the tightest, z3 the loosest).
+bool farSharper(const BinghamDistribution& sharp, const BinghamDistribution& wide, double ratio) {
+  const double loosest = -sharp.concentrations()(2);
+  return loosest > 0.0 && loosest >= ratio * -wide.concentrations()(0);
+}
+
+}  // namespace
+
+void checkSharpnessRatio(double sharpness_ratio) {
+  if (!std::isfinite(sharpness_ratio) || !(sharpness_ratio == 0.0 || sharpness_ratio >= 1.0)) {
+    throw Error("a product's sharpness ratio must be 0 (exact) or at least 1, got " +
+                std::to_string(sharpness_ratio));
+  }
+}
+
+BinghamProduct multiplyKeepingSharpFactor(const BinghamDistribution& first,
+                                          const BinghamDistribution& second,
+                                          double sharpness_ratio) {
+  checkSharpnessRatio(sharpness_ratio);
+  if (sharpness_ratio == 0.0) return multiply(first, second);
+  const BinghamDistribution* sharp = nullptr;
+  const BinghamDistribution* wide = nullptr;
+  if (farSharper(first, second, sharpness_ratio)) {
+    sharp = &first;
+    wide = &second;
+  } else if (farSharper(second, first, sharpness_ratio)) {
+    sharp = &second;
+    wide = &first;
+  } else {
+    return multiply(first, second);
+  }
+  BinghamProduct product;
+  product.distribution = *sharp;
+  product.log_scale = wide->logDensity(sharp->mode());
   return product;
 }
 

@@ -268,10 +268,11 @@ BinghamMixture BinghamMixture::rotated(const Eigen::Vector4d& q) const {
 }
 
 BinghamMixture multiply(const BinghamMixture& a, const BinghamMixture& b,
-                        double relative_weight_floor) {
+                        double relative_weight_floor, double sharpness_ratio) {
   if (!(relative_weight_floor >= 0.0 && relative_weight_floor < 1.0)) {
     throw Error("The relative weight floor of a mixture product must lie in [0, 1).");
   }
+  checkSharpnessRatio(sharpness_ratio);
   struct Pair {
     std::size_t i, j;
     double log_weight_bound;
@@ -311,7 +312,8 @@ BinghamMixture multiply(const BinghamMixture& a, const BinghamMixture& b,
     const auto top = std::max_element(pairs.begin(), pairs.end(), [](const Pair& x, const Pair& y) {
       return x.log_weight_bound < y.log_weight_bound;
     });
-    const BinghamProduct product = multiply(a.component(top->i), b.component(top->j));
+    const BinghamProduct product =
+        multiplyKeepingSharpFactor(a.component(top->i), b.component(top->j), sharpness_ratio);
     heaviest_known = std::log(a.weight(top->i)) + std::log(b.weight(top->j)) + product.log_scale;
   }
   std::vector<Pair> kept;
@@ -326,7 +328,8 @@ BinghamMixture multiply(const BinghamMixture& a, const BinghamMixture& b,
 #pragma omp parallel for schedule(dynamic, 16)
   for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t>(kept.size()); ++k) {
     const Pair& pair = kept[static_cast<std::size_t>(k)];
-    BinghamProduct product = multiply(a.component(pair.i), b.component(pair.j));
+    BinghamProduct product =
+        multiplyKeepingSharpFactor(a.component(pair.i), b.component(pair.j), sharpness_ratio);
     log_weights[static_cast<std::size_t>(k)] =
         std::log(a.weight(pair.i)) + std::log(b.weight(pair.j)) + product.log_scale;
     components[static_cast<std::size_t>(k)] = std::move(product.distribution);

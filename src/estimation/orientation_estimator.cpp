@@ -7,6 +7,7 @@
 #include <string>
 #include <utility>
 
+#include "view_direction_classification/bingham/bingham.h"
 #include "view_direction_classification/common/error.h"
 #include "view_direction_classification/common/quaternion.h"
 #include "view_direction_classification/estimation/view_measurement.h"
@@ -76,6 +77,7 @@ OrientationFilterOptions filterOptionsOf(const EstimatorParameters& parameters) 
   OrientationFilterOptions options;
   options.reduction.max_components = parameters.max_components;
   options.reduction.relative_weight_threshold = parameters.belief_weight_floor;
+  options.sharpness_ratio = parameters.sharpness_ratio;
   // The belief's entropy is published with every estimate: 1000 draws keep it at a few ms with
   // a standard error of a few hundredths of a nat.
   options.entropy_samples = 1000;
@@ -96,6 +98,7 @@ void checkParameters(const EstimatorParameters& p) {
     throw Error("belief_weight_floor must lie in [0, 1), got " +
                 std::to_string(p.belief_weight_floor));
   }
+  checkSharpnessRatio(p.sharpness_ratio);
   if (!std::isfinite(p.kappa)) throw Error("kappa must be finite");
   if (!(p.psum_exponent > 0.0) || !std::isfinite(p.psum_exponent)) {
     throw Error("psum_exponent must be finite and positive, got " +

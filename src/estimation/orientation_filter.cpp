@@ -15,12 +15,14 @@ void OrientationFilter::setOptions(OrientationFilterOptions options) {
   // Validates the reduction options now rather than at the next update (the result is not
   // kept: the belief is only reduced by update()).
   reduce(BinghamMixture(), options.reduction);
+  checkSharpnessRatio(options.sharpness_ratio);
   options_ = std::move(options);
 }
 
 void OrientationFilter::update(const BinghamMixture& measurement) {
   // Products that reduce() would drop are never computed (the normalisers dominate the cost).
-  belief_ = reduce(multiply(belief_, measurement, options_.reduction.relative_weight_threshold),
+  belief_ = reduce(multiply(belief_, measurement, options_.reduction.relative_weight_threshold,
+                            options_.sharpness_ratio),
                    options_.reduction);
   ++update_count_;
 }

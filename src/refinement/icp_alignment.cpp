@@ -2,7 +2,7 @@
 
 #include <pcl/registration/correspondence_estimation.h>
 #include <pcl/registration/icp.h>
-#include <pcl/registration/transformation_estimation_point_to_plane_lls.h>
+#include <pcl/registration/transformation_estimation_point_to_plane_lls_weighted.h>
 #include <pcl/search/kdtree.h>
 
 #include <algorithm>
@@ -11,6 +11,8 @@
 #include <utility>
 #include <vector>
 
+#include "view_direction_classification/common/error.h"
+
 namespace vdc {
 
 namespace {
@@ -18,20 +20,38 @@ namespace {
 // PCL's linearised point-to-plane step solves a 6 x 6 system by inversion: where the matched
 // surface leaves a motion unconstrained (a cylinder's roll and slide, a plane's drift) it is
 // singular, the step is NaN and the next correspondence search aborts. Such a step becomes no
-// step, and the alignment is refused as degenerate.
+// step, and the alignment is refused as degenerate. Each pair is weighted by its observed point's
+// weight (PCL's weighted step scales each row by the square root of it).
 class FiniteStepPointToPlane
-    : public pcl::registration::TransformationEstimationPointToPlaneLLS<pcl::PointNormal,
-                                                                        pcl::PointNormal> {
+    : public pcl::registration::TransformationEstimationPointToPlaneLLSWeighted<pcl::PointNormal,
+                                                                                pcl::PointNormal> {
  public:
-  using Base = pcl::registration::TransformationEstimationPointToPlaneLLS<pcl::PointNormal,
-                                                                          pcl::PointNormal>;
+  using Base = pcl::registration::TransformationEstimationPointToPlaneLLSWeighted<pcl::PointNormal,
+                                                                                  pcl::PointNormal>;
   using Base::estimateRigidTransformation;
 
+  explicit FiniteStepPointToPlane(std::vector<float> point_weights) {
+    for (float& weight : point_weights) weight = std::sqrt(weight);
+    row_scales_ = std::move(point_weights);
+  }
+
+  // PCL's own overload would read each pair's weight from pcl::Correspondence, whose weight
+  // shares its storage with the distance the convergence test reads: the weights come from the
+  // observed points instead.
   void estimateRigidTransformation(const pcl::PointCloud<pcl::PointNormal>& source,
                                    const pcl::PointCloud<pcl::PointNormal>& target,
                                    const pcl::Correspondences& correspondences,
                                    Matrix4& transform) const override {
-    Base::estimateRigidTransformation(source, target, correspondences, transform);
+    std::vector<float> scales(correspondences.size(), 1.0f);
+    if (!row_scales_.empty()) {
+      for (std::size_t i = 0; i < correspondences.size(); ++i) {
+        scales[i] = row_scales_[static_cast<std::size_t>(correspondences[i].index_query)];
+      }
+    }
+    pcl::ConstCloudIterator<pcl::PointNormal> source_it(source, correspondences, true);
+    pcl::ConstCloudIterator<pcl::PointNormal> target_it(target, correspondences, false);
+    std::vector<float>::const_iterator scale_it = scales.begin();
+    Base::estimateRigidTransformation(source_it, target_it, scale_it, transform);
     if (!transform.allFinite()) {
       transform.setIdentity();
       degenerate = true;
@@ -39,6 +59,9 @@ class FiniteStepPointToPlane
   }
 
   mutable bool degenerate = false;
+
+ private:
+  std::vector<float> row_scales_;  // per observed point: the square root of its weight
 };
 
 // PCL's correspondence search asks the k-d tree one point at a time, which costs FLANN's per-call
@@ -114,7 +137,7 @@ double meanSquaredDistance(const ModelSurface& surface,
 
 struct IcpAlignment::Registration {
   CountingIcp icp;
-  std::shared_ptr<FiniteStepPointToPlane> step = std::make_shared<FiniteStepPointToPlane>();
+  std::shared_ptr<FiniteStepPointToPlane> step;
   std::shared_ptr<const ModelSurface> surface;
   pcl::PointCloud<pcl::PointNormal>::Ptr observed;
   IcpSettings settings;
@@ -122,8 +145,12 @@ struct IcpAlignment::Registration {
 
 IcpAlignment::IcpAlignment(std::shared_ptr<const ModelSurface> surface,
                            pcl::PointCloud<pcl::PointNormal>::Ptr observed_world,
-                           IcpSettings settings)
+                           IcpSettings settings, std::vector<float> point_weights)
     : registration_(std::make_unique<Registration>()) {
+  if (!point_weights.empty() && point_weights.size() != observed_world->size()) {
+    throw Error("ICP needs one weight per observed point or none");
+  }
+  registration_->step = std::make_shared<FiniteStepPointToPlane>(std::move(point_weights));
   auto& icp = registration_->icp;
   // The observed points are the source and the model the target: point-to-plane uses the
   // target's normals, which the model has exactly (the mesh's), so the scene needs none.

@@ -8,6 +8,7 @@
 #include <Eigen/Geometry>
 
 #include <memory>
+#include <vector>
 
 #include "view_direction_classification/refinement/model_surface.h"
 
@@ -44,8 +45,11 @@ struct IcpOutcome {
 // k-d tree of the model for all of them. Not thread-safe.
 class IcpAlignment {
  public:
+  // point_weights: one per observed point, how much its squared point-to-plane distance counts
+  // (e.g. how many raw points a voxel centroid stands for); empty: 1 each.
   IcpAlignment(std::shared_ptr<const ModelSurface> surface,
-               pcl::PointCloud<pcl::PointNormal>::Ptr observed_world, IcpSettings settings);
+               pcl::PointCloud<pcl::PointNormal>::Ptr observed_world, IcpSettings settings,
+               std::vector<float> point_weights = {});
   ~IcpAlignment();
 
   // start: object_from_world of the hypothesis.

@@ -16,6 +16,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "counted_voxels.h"
 #include "fit_covariance.h"
 #include "icp_alignment.h"
 #include "parallel_for.h"
@@ -391,10 +392,6 @@ std::vector<RefinedPose> withRollSectors(std::vector<RefinedPose> kept, const Mo
   return distinct;
 }
 
-// Each kept pose aligned once more, on every observed point (voxel-filtered to
-// polish_scene_voxel) against the finer polish surface, with tighter correspondences: the starts'
-// ICP runs on a few hundred points against 4 mm samples and settles within half a millimetre and
-// a degree, which leaves a floor of a few tenths of a degree (doc/method.md, "Refinement").
 // The samples of `surface` that face one of the cameras (object frame) at least a little, or
 // null when fewer than 10 do: what the polish may match a point to. A point on a thin wall's
 // outside otherwise pairs with the inside's samples a few millimetres behind it.
@@ -415,7 +412,13 @@ std::shared_ptr<const ModelSurface> facingPart(const ModelSurface& surface,
                                               surface.spacing());
 }
 
-void polishKept(const ModelSurface& surface, const pcl::PointCloud<pcl::PointXYZ>& thinned,
+// Each kept pose aligned once more, on every observed point (voxel-filtered to
+// polish_scene_voxel, each centroid weighted by the points it stands for, so that the fit weighs
+// the surface as all the points would) against the finer polish surface, with tighter
+// correspondences: the starts' ICP runs on a few hundred points against 4 mm samples and settles
+// within half a millimetre and a degree, which leaves a floor of a few tenths of a degree
+// (doc/method.md, "Refinement").
+void polishKept(const ModelSurface& surface, const CountedVoxels& observed,
                 const std::vector<RefinementView>& views, const PoseVerifier& verifier,
                 const RefinementParameters& parameters, std::vector<RefinedPose>* kept) {
   IcpSettings settings;
@@ -424,7 +427,7 @@ void polishKept(const ModelSurface& surface, const pcl::PointCloud<pcl::PointXYZ
   settings.convergence_translation = 0.1 * parameters.convergence_translation;
   settings.convergence_rotation_deg = 0.1 * parameters.convergence_rotation_deg;
   settings.settle_iterations = parameters.polish_iterations;  // PCL's criteria alone
-  const auto source = icpSource(thinned);
+  const auto source = icpSource(*observed.centroids);
   // Each pose's facing samples and ICP are its own, and the verifier is thread-safe: the poses
   // are polished in parallel (a first view keeps two).
   parallelFor(kept->size(), parameters.threads, [&](int, std::size_t index) {
@@ -436,7 +439,8 @@ void polishKept(const ModelSurface& surface, const pcl::PointCloud<pcl::PointXYZ
     }
     const std::shared_ptr<const ModelSurface> facing = facingPart(surface, cameras);
     if (!facing) return;
-    const IcpOutcome outcome = IcpAlignment(facing, source, settings).align(object_from_world);
+    const IcpOutcome outcome =
+        IcpAlignment(facing, source, settings, observed.counts).align(object_from_world);
     if (!outcome.converged) return;
     RefinedPose polished = pose;
     polished.world_from_object = outcome.object_from_world.inverse();
@@ -714,12 +718,8 @@ RefinementResult PoseRefiner::refine(const BinghamMixture& belief, const Eigen::
   }
   result.kept = keptPoses(result.tried, parameters_);
   if (parameters_.polish_iterations > 0) {
-    const pcl::PointCloud<pcl::PointXYZ>::Ptr polish_points =
-        parameters_.polish_scene_voxel == parameters_.scene_voxel
-            ? thinned
-            : voxelFiltered(observation.world, parameters_.polish_scene_voxel);
-    polishKept(*polish_surface_, *polish_points, observation.views, verifier, parameters_,
-               &result.kept);
+    polishKept(*polish_surface_, countedVoxels(observation.world, parameters_.polish_scene_voxel),
+               observation.views, verifier, parameters_, &result.kept);
   }
   if (parameters_.roll_sectors)
     result.kept = withRollSectors(std::move(result.kept), *surface_, verifier, parameters_);

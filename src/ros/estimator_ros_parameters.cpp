@@ -1,5 +1,7 @@
 #include "estimator_ros_parameters.h"
 
+#include <cmath>
+
 #include "view_direction_classification/common/error.h"
 
 namespace vdc {
@@ -35,6 +37,10 @@ ParameterTable<EstimatorRosParameters> makeTable() {
       .add("min_weight", core(&E::min_weight), numberIn(0.0, 1.0, false))
       .add("psum_exponent", core(&E::psum_exponent), numberAbove(0.0))
       .add("belief_weight_floor", core(&E::belief_weight_floor), numberIn(0.0, 1.0, false))
+      .add("sharpness_ratio", core(&E::sharpness_ratio),
+           ParameterRule<double>{
+               "0 (every product exact) or a finite number >= 1",
+               [](double value) { return value == 0.0 || (std::isfinite(value) && value >= 1.0); }})
       .add("max_object_shift", core(&E::max_object_shift), numberAtLeast(0.0, "0: from the model"));
   // Frame selection on streams.
   using F = FrameSelectionParameters;

@@ -94,6 +94,21 @@ CLI::Validator nonNegativeFinite() {
       "");
 }
 
+// A sharpness ratio (bingham.h): 0, or a finite number >= 1.
+CLI::Validator zeroOrAtLeastOne() {
+  return CLI::Validator(
+      [](const std::string& text) -> std::string {
+        char* end = nullptr;
+        const double value = std::strtod(text.c_str(), &end);
+        const bool number = end != text.c_str() && *end == '\0';
+        if (!number || !(value == 0.0 || (std::isfinite(value) && value >= 1.0))) {
+          return "must be 0 or a finite number >= 1, got '" + text + "'";
+        }
+        return "";
+      },
+      "0 or >= 1");
+}
+
 // A CLI validator for a finite number (CLI's own conversion accepts "nan" and "inf").
 CLI::Validator finiteNumber() {
   return CLI::Validator(
@@ -207,6 +222,13 @@ void addEvaluateOptions(CLI::App& command, EvaluateOptions& options) {
       "belief components below this fraction of the heaviest are dropped")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 0.5));
+  addSetting(
+      command, options, "--sharpness-ratio",
+      [](auto& s) -> auto& { return s.estimator.sharpness_ratio; }, "/estimator/sharpness_ratio",
+      "a belief component this many times sharper than the other factor keeps its mode (0: "
+      "every product exact)")
+      ->capture_default_str()
+      ->check(zeroOrAtLeastOne());
   // Frame selection (estimation/frame_selection.h), in radians as config/estimator.yaml.
   addSetting(
       command, options, "--min-view-separation",

@@ -131,6 +131,33 @@ TEST(BinghamMixture, TwoGirdlesFromDifferentDirectionsFuseAtTheirIntersection) {
   EXPECT_LE(c.concentrations()(2), -kappa + 1e-9);  // no free direction left
 }
 
+TEST(BinghamMixture, AFittedPoseTimesViewGirdlesKeepsThePoseAndWeighsItsHypotheses) {
+  // Two verified poses (sigma about 1.5 degrees), half a turn apart about z, and a belief of two
+  // view girdles (concentration 18), each passing a few degrees from one of them: the exact
+  // product moves each pose towards its girdle, the sharpness ratio keeps the poses where the fit
+  // put them, and the poses are weighed alike either way.
+  const Eigen::Vector4d pose_a = rotationAbout(1, 2, 3, 40);
+  const Eigen::Vector4d pose_b = quaternionMultiply(rotationAbout(0, 0, 1, 180), pose_a);
+  const BinghamMixture poses({0.5, 0.5}, {centredOn(pose_a, {-3000, -3000, -3000}),
+                                          centredOn(pose_b, {-3000, -3000, -3000})});
+  const BinghamMixture girdles(
+      {0.8, 0.2},
+      {centredOn(quaternionMultiply(rotationAbout(0, 1, 0, 6), pose_a), {0.0, -18.0, -18.0}),
+       centredOn(quaternionMultiply(rotationAbout(1, 0, 0, 6), pose_b), {-18.0, 0.0, -18.0})});
+  const BinghamMixture exact = multiply(girdles, poses, 1e-6);
+  const BinghamMixture kept = multiply(girdles, poses, 1e-6, 10.0);
+  ASSERT_EQ(exact.size(), kept.size());
+  ASSERT_EQ(kept.size(), 2u);
+  for (std::size_t k = 0; k < kept.size(); ++k) {
+    const Eigen::Vector4d& pose = k == 0 ? pose_a : pose_b;
+    EXPECT_LT(angleDeg(kept.component(k).mode(), pose), 1e-9);
+    EXPECT_GT(angleDeg(exact.component(k).mode(), pose), 0.01);
+    EXPECT_NEAR(kept.weight(k), exact.weight(k), 0.02);
+  }
+  EXPECT_GT(kept.weight(0), 0.75);  // the girdle that carries more weight still says which
+  EXPECT_THROW(multiply(girdles, poses, 0.0, 0.5), Error);
+}
+
 // Many random concentrated components, so most pairwise products are negligible.
 BinghamMixture randomConcentratedMixture(int count, double concentration, unsigned seed) {
   std::mt19937 rng(seed);

@@ -6,8 +6,11 @@
 #include <gtest/gtest.h>
 #include <Eigen/QR>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
+#include <tuple>
 #include <vector>
 
 namespace vdc {
@@ -137,6 +140,73 @@ TEST(Bingham, ProductAddsExponentsAndItsScaleIsTheOverlapIntegral) {
     }
   }
   EXPECT_NEAR(std::exp(product.log_scale), overlap, 0.02 * overlap);
+}
+
+// A pose-like component (every concentration in the thousands) and a girdle (two tens, roll
+// free) whose circle passes 20 degrees from the pose's mode.
+struct SharpAndWide {
+  BinghamDistribution sharp, wide;
+};
+SharpAndWide poseAndGirdle() {
+  const Eigen::Matrix4d basis = randomBasis(21);
+  SharpAndWide factors;
+  factors.sharp = BinghamDistribution(Eigen::Vector3d(-3000, -2500, -2000), basis.leftCols<3>());
+  // The girdle's circle: the pose's mode turned by 20 degrees towards its first axis.
+  const double tilt = 20.0 * M_PI / 180.0;
+  Eigen::Matrix4d girdle_basis = basis;
+  girdle_basis.col(3) = std::cos(tilt) * basis.col(3) + std::sin(tilt) * basis.col(0);
+  girdle_basis.col(0) = -std::sin(tilt) * basis.col(3) + std::cos(tilt) * basis.col(0);
+  Eigen::Matrix<double, 4, 3> axes;
+  axes << girdle_basis.col(0), girdle_basis.col(1), girdle_basis.col(2);
+  factors.wide = BinghamDistribution(Eigen::Vector3d(-18, -18, 0), axes);
+  return factors;
+}
+
+TEST(Bingham, AFarSharperFactorKeepsItsModeAndShapeWeightedByTheOtherAtItsMode) {
+  const SharpAndWide f = poseAndGirdle();
+  const BinghamProduct exact = multiply(f.sharp, f.wide);
+  // The exact product's mode leans towards the girdle; the kept one does not.
+  EXPECT_GT(std::acos(std::min(1.0, std::abs(exact.distribution.mode().dot(f.sharp.mode())))),
+            1e-4);
+  for (const bool sharp_first : {true, false}) {
+    const BinghamProduct kept = sharp_first ? multiplyKeepingSharpFactor(f.sharp, f.wide, 10.0)
+                                            : multiplyKeepingSharpFactor(f.wide, f.sharp, 10.0);
+    EXPECT_NEAR(std::abs(kept.distribution.mode().dot(f.sharp.mode())), 1.0, 1e-12);
+    EXPECT_EQ(kept.distribution.concentrations(), f.sharp.concentrations());
+    EXPECT_NEAR(kept.log_scale, f.wide.logDensity(f.sharp.mode()), 1e-12);
+    // Laplace's approximation of the overlap integral: close to the exact one.
+    EXPECT_NEAR(kept.log_scale, exact.log_scale, 0.05);
+  }
+}
+
+TEST(Bingham, FactorsOfComparableSharpnessMultiplyExactly) {
+  const SharpAndWide f = poseAndGirdle();
+  // 2000 against 18 is a ratio of 111: above it, or with ratio 0, the product is exact.
+  const BinghamDistribution other = makeDistribution(Eigen::Vector3d(-900, -700, -500), 22);
+  for (const auto& [first, second, ratio] :
+       {std::make_tuple(f.sharp, f.wide, 200.0), std::make_tuple(f.sharp, f.wide, 0.0),
+        std::make_tuple(f.sharp, other, 10.0)}) {
+    const BinghamProduct exact = multiply(first, second);
+    const BinghamProduct product = multiplyKeepingSharpFactor(first, second, ratio);
+    EXPECT_TRUE(
+        product.distribution.exponentMatrix().isApprox(exact.distribution.exponentMatrix(), 1e-12));
+    EXPECT_DOUBLE_EQ(product.log_scale, exact.log_scale);
+  }
+}
+
+TEST(Bingham, AUniformFactorKeepsTheOtherExactly) {
+  const SharpAndWide f = poseAndGirdle();
+  const BinghamProduct exact = multiply(f.sharp, BinghamDistribution());
+  const BinghamProduct kept = multiplyKeepingSharpFactor(BinghamDistribution(), f.sharp, 10.0);
+  EXPECT_NEAR(kept.log_scale, exact.log_scale, 1e-9);
+  EXPECT_NEAR(std::abs(kept.distribution.mode().dot(exact.distribution.mode())), 1.0, 1e-12);
+}
+
+TEST(Bingham, RefusesASharpnessRatioThatIsNoRatio) {
+  const SharpAndWide f = poseAndGirdle();
+  for (const double ratio : {-1.0, 0.5, std::nan(""), std::numeric_limits<double>::infinity()}) {
+    EXPECT_THROW(multiplyKeepingSharpFactor(f.sharp, f.wide, ratio), Error) << ratio;
+  }
 }
 
 TEST(Bingham, FromExponentMatrixRecoversTheDistributionAndItsShift) {

@@ -115,6 +115,9 @@ TEST_F(OrientationEstimatorTest, RefusesInvalidParameters) {
   parameters.belief_weight_floor = -1e-6;
   EXPECT_THROW(OrientationEstimator(test::quickMugModel(), parameters), Error);
   parameters = {};
+  parameters.sharpness_ratio = 0.5;  // would keep the wider factor's mode
+  EXPECT_THROW(OrientationEstimator(test::quickMugModel(), parameters), Error);
+  parameters = {};
   parameters.segmentation.roi_radius = -1;
   EXPECT_THROW(OrientationEstimator(test::quickMugModel(), parameters), Error);
   EXPECT_THROW(OrientationEstimator(nullptr, {}), Error);

@@ -61,6 +61,7 @@ class EstimatorStartup(unittest.TestCase):
         for parameter, value, shown in [("n_feat", -1, "-1"), ("max_components", 0, "0"),
                                         ("min_weight", 1.0, "1"),
                                         ("belief_weight_floor", -0.1, "-0.1"),
+                                        ("sharpness_ratio", 0.5, "0.5"),
                                         ("roi_centre", [0.0, 1.0], "[0, 1]")]:
             assert_refused(self, NODE, ["~" + parameter, "got %s." % shown],
                            "_model:=/nonexistent.h5", preset={parameter: value})

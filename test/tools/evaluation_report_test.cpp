@@ -243,6 +243,7 @@ TEST_F(EvaluateOptionsTest, SummaryRecordsEverySettingARunUsedUnderItsKey) {
   parse(
       "--sequences 3 --views 4 --candidates 9 --seed 5 --distance 0.5 --kappa 2.5 --n-feat 7 "
       "--max-components 11 --min-weight 0.01 --psum-exponent 2.5 --belief-weight-floor 0.001 "
+      "--sharpness-ratio 20 "
       "--refinement-views 3 --search-below-score 0.5 --no-noise "
       "--min-view-separation 0.2 --independent-view-separation 0.5 --stream-rate 15 --dwell 3 "
       "--refinement icp");
@@ -267,6 +268,7 @@ TEST_F(EvaluateOptionsTest, SummaryRecordsEverySettingARunUsedUnderItsKey) {
                                      {"refinement_views", 3},
                                      {"search_below_score", 0.5},
                                      {"belief_weight_floor", 0.001},
+                                     {"sharpness_ratio", 20.0},
                                      {"min_view_separation", 0.2},
                                      {"independent_view_separation", 0.5},
                                      {"refinement", "icp"}}}};

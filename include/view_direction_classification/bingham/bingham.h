@@ -89,4 +89,18 @@ struct BinghamProduct {
 };
 BinghamProduct multiply(const BinghamDistribution& first, const BinghamDistribution& second);
 
+// The product where one factor is far sharper than the other: when the sharper one is at least
+// `sharpness_ratio` times more concentrated along its loosest axis than the other along its
+// tightest (|z3| >= ratio |z1'|, z3 < 0), the product is the sharper factor itself, scaled by the
+// other's density at its mode (Laplace's approximation of the overlap integral, exact when the
+// other is uniform). Otherwise, or with ratio 0, the exact product above. Used where the wide
+// factor's gradient across the sharp one is a model's artefact, not evidence: a coarse
+// viewing-direction girdle would otherwise shift a geometric fit's mode by a fraction of a
+// degree. Throws vdc::Error for a ratio that is negative, in (0, 1) or not finite.
+BinghamProduct multiplyKeepingSharpFactor(const BinghamDistribution& first,
+                                          const BinghamDistribution& second,
+                                          double sharpness_ratio);
+// The check multiplyKeepingSharpFactor makes of its ratio (throws vdc::Error).
+void checkSharpnessRatio(double sharpness_ratio);
+
 }  // namespace vdc

@@ -61,9 +61,13 @@ class BinghamMixture {
 // out (what reduce() would drop anyway): a pair's weight is bounded from above with F(Z_ij) <=
 // 2 pi^2 from one 4 x 4 eigen-decomposition, and the normaliser - the expensive part - is only
 // computed for pairs whose bound clears the floor. Pairs are computed in parallel (OpenMP); the
-// result does not depend on the thread count. Throws vdc::Error for a floor outside [0, 1).
+// result does not depend on the thread count.
+//
+// With sharpness_ratio > 0, a pair whose one factor is far sharper than the other is the sharper
+// factor weighted by the other's density at its mode (multiplyKeepingSharpFactor, bingham.h).
+// Throws vdc::Error for a floor outside [0, 1) or an invalid sharpness ratio.
 BinghamMixture multiply(const BinghamMixture& a, const BinghamMixture& b,
-                        double relative_weight_floor = 0.0);
+                        double relative_weight_floor = 0.0, double sharpness_ratio = 0.0);
 
 struct MixtureReductionOptions {
   // Components lighter than this fraction of the heaviest one are dropped.

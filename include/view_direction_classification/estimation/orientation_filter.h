@@ -11,6 +11,9 @@ namespace vdc {
 struct OrientationFilterOptions {
   MixtureReductionOptions reduction;
   MapOptions map;
+  // Products of a component with one far sharper than it keep the sharper one's shape and mode
+  // (multiplyKeepingSharpFactor, bingham.h); 0: every product exact.
+  double sharpness_ratio = 0.0;
   // Monte Carlo entropy of a multi-component belief (BinghamMixture::entropy).
   int entropy_samples = 4000;
   std::uint64_t entropy_seed = 1;
