@@ -189,6 +189,10 @@ void OrientationEstimator::setParameters(EstimatorParameters parameters) {
       parameters.max_object_shift > 0.0 ? parameters.max_object_shift : 2.0 * offset + 0.02;
   sighting_ = sighting;
   parameters_ = std::move(parameters);
+  // Fewer views aligned together from the next refinement on: the earlier ones beyond them go.
+  while (static_cast<int>(refined_views_.size()) > parameters_.refinement_views - 1) {
+    refined_views_.pop_back();
+  }
 }
 
 ViewUpdate OrientationEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
@@ -320,25 +324,7 @@ void OrientationEstimator::refineAfterFusion(const pcl::PointCloud<pcl::PointXYZ
   rememberRefinedView(view);
   result->refinement_skip_reason = refinement.skip_reason;
   if (search_refiner_ && !refinement.skipped()) {
-    check_views_.push_front(thinnedView(view, parameters_.refinement_parameters.scene_voxel));
-    while (static_cast<int>(check_views_.size()) > parameters_.belief_check.check_views) {
-      check_views_.pop_back();
-    }
-    // The belief's best pose: refinement's, or without one the MAP at the position estimate.
-    Eigen::Isometry3d belief_pose = Eigen::Isometry3d::Identity();
-    double belief_score = 0.0;
-    if (refinement.kept.empty()) {
-      belief_pose.linear() = quaternionToRotationMatrix(mapOrientation());
-      belief_pose.translation() = position;
-      belief_score = verifiedScore(*refiner_, {check_views_.front()}, belief_pose);
-    } else {
-      belief_pose = refinement.kept.front().world_from_object;
-      belief_score = refinement.kept.front().score.score();
-    }
-    if (belief_score < parameters_.belief_check.search_below_score) {
-      searchBeyondBelief(views, position, belief_pose, measurement, line_of_sight, &refinement,
-                         result);
-    }
+    checkBeliefOnView(view, views, position, measurement, line_of_sight, &refinement, result);
   }
   if (refinement.kept.empty()) return;
   filter_.update(refinedMeasurement(refinement, parameters_.refined_fusion));
@@ -348,6 +334,33 @@ void OrientationEstimator::refineAfterFusion(const pcl::PointCloud<pcl::PointXYZ
   refined_position_ = refinement.kept.front().world_from_object.translation();
   refined_position_covariance_ = refinement.kept.front().position_covariance;
   result->refined_poses = static_cast<int>(refinement.kept.size());
+}
+
+void OrientationEstimator::checkBeliefOnView(const RefinementView& view,
+                                             const std::vector<RefinementView>& views,
+                                             const Eigen::Vector3d& position,
+                                             const BinghamMixture& measurement,
+                                             const Eigen::Vector4d& line_of_sight,
+                                             RefinementResult* refinement, ViewUpdate* result) {
+  check_views_.push_front(thinnedView(view, parameters_.refinement_parameters.scene_voxel));
+  while (static_cast<int>(check_views_.size()) > parameters_.belief_check.check_views) {
+    check_views_.pop_back();
+  }
+  // The belief's best pose: refinement's, or without one the MAP at the position estimate.
+  Eigen::Isometry3d belief_pose = Eigen::Isometry3d::Identity();
+  double belief_score = 0.0;
+  if (refinement->kept.empty()) {
+    belief_pose.linear() = quaternionToRotationMatrix(mapOrientation());
+    belief_pose.translation() = position;
+    belief_score = verifiedScore(*refiner_, {check_views_.front()}, belief_pose);
+  } else {
+    belief_pose = refinement->kept.front().world_from_object;
+    belief_score = refinement->kept.front().score.score();
+  }
+  if (belief_score < parameters_.belief_check.search_below_score) {
+    searchBeyondBelief(views, position, belief_pose, measurement, line_of_sight, refinement,
+                       result);
+  }
 }
 
 void OrientationEstimator::searchBeyondBelief(const std::vector<RefinementView>& views,

@@ -30,19 +30,22 @@ inline TrainingParameters quickMugTrainingParameters() {
 // script empties the cache whenever the libraries that train it were rebuilt.
 inline ModelBundle cachedQuickMugModel(const std::string& directory) {
   const std::string path = directory + "/quick_mug_model.h5";
-  const int lock = ::open((path + ".lock").c_str(), O_CREAT | O_RDWR, 0644);
-  if (lock < 0 || ::flock(lock, LOCK_EX) != 0) {
+  // Closing the file releases the lock, also when training throws.
+  struct LockFile {
+    int fd;
+    ~LockFile() {
+      if (fd >= 0) ::close(fd);
+    }
+  } const lock{::open((path + ".lock").c_str(), O_CREAT | O_RDWR, 0644)};
+  if (lock.fd < 0 || ::flock(lock.fd, LOCK_EX) != 0) {
     throw Error("quick model cache: cannot lock " + path + ".lock");
   }
-  ModelBundle bundle;
   try {
-    bundle = loadModelBundle(path);
+    return loadModelBundle(path);
   } catch (const Error&) {  // none yet, or a damaged one: train it again
     saveModelBundle(trainModel(makeMug(), quickMugTrainingParameters()), path);  // atomic
-    bundle = loadModelBundle(path);  // every process then tests the same, loaded, model
+    return loadModelBundle(path);  // every process then tests the same, loaded, model
   }
-  ::close(lock);  // releases the lock
-  return bundle;
 }
 
 // A small mug model (12 directions x 3 clouds, coarse surface set) trained once per test binary

@@ -228,6 +228,13 @@ class OrientationEstimator {
                          const Eigen::Isometry3d& world_from_camera,
                          const BinghamMixture& measurement, const Eigen::Vector4d& line_of_sight,
                          ViewUpdate* result);
+  // Keeps `view` (thinned) among the latest check_views and, where the belief's best pose
+  // (refinement's, or without one the MAP at `position`) verifies below search_below_score on
+  // it, searches beyond the belief (belief_check.h).
+  void checkBeliefOnView(const RefinementView& view, const std::vector<RefinementView>& views,
+                         const Eigen::Vector3d& position, const BinghamMixture& measurement,
+                         const Eigen::Vector4d& line_of_sight, RefinementResult* refinement,
+                         ViewUpdate* result);
   // The search after the belief's best pose (refinement's, or its MAP) fitted poorly
   // (belief_check.h): replaces *refinement with the search's result and rebuilds the belief
   // from `measurement` when the geometry contradicts the belief.
