@@ -357,18 +357,22 @@ void OrientationEstimator::checkBeliefOnView(const RefinementView& view,
     belief_pose = refinement->kept.front().world_from_object;
     belief_score = refinement->kept.front().score.score();
   }
-  if (belief_score < parameters_.belief_check.search_below_score) {
-    searchBeyondBelief(views, position, belief_pose, measurement, line_of_sight, refinement,
-                       result);
+  if (belief_score < searchThreshold()) {
+    searchBeyondBelief(views, position, belief_pose, belief_score, measurement, line_of_sight,
+                       refinement, result);
   }
 }
 
-void OrientationEstimator::searchBeyondBelief(const std::vector<RefinementView>& views,
-                                              const Eigen::Vector3d& position,
-                                              const Eigen::Isometry3d& belief_pose,
-                                              const BinghamMixture& measurement,
-                                              const Eigen::Vector4d& line_of_sight,
-                                              RefinementResult* refinement, ViewUpdate* result) {
+double OrientationEstimator::searchThreshold() const {
+  const BeliefCheckParameters& check = parameters_.belief_check;
+  if (!confirmed_fit_score_) return check.search_below_score;
+  return std::min(check.search_below_score, *confirmed_fit_score_ - check.rebuild_margin);
+}
+
+void OrientationEstimator::searchBeyondBelief(
+    const std::vector<RefinementView>& views, const Eigen::Vector3d& position,
+    const Eigen::Isometry3d& belief_pose, double belief_score, const BinghamMixture& measurement,
+    const Eigen::Vector4d& line_of_sight, RefinementResult* refinement, ViewUpdate* result) {
   result->searched = true;
   RefinementResult search = search_refiner_->refine(
       searchBelief(line_of_sight, views.front().world_from_camera), position, views);
@@ -377,7 +381,15 @@ void OrientationEstimator::searchBeyondBelief(const std::vector<RefinementView>&
   const BeliefVerdict verdict =
       judgeBelief(*refiner_, latest, belief_pose, search.kept.front().world_from_object,
                   parameters_.belief_check);
-  if (!verdict.contradicted) return;
+  if (!verdict.contradicted) {
+    // Nothing fits clearly better: this is what the camera's noise lets a right pose reach, if
+    // the pose verifies at all (a pose below min_score says nothing about the camera).
+    if (belief_score >= parameters_.refinement_parameters.min_score) {
+      confirmed_fit_score_ = belief_score;
+    }
+    return;
+  }
+  confirmed_fit_score_.reset();
   char reason[200];
   std::snprintf(reason, sizeof(reason),
                 "the geometry contradicted the belief: over the latest %zu views its best pose "
@@ -507,6 +519,7 @@ void OrientationEstimator::reset() {
   refined_position_covariance_.reset();
   refined_views_.clear();
   check_views_.clear();
+  confirmed_fit_score_.reset();
 }
 
 Eigen::Vector4d OrientationEstimator::mapOrientation() const {

@@ -181,6 +181,40 @@ TEST_F(EstimatorRefinementTest, ViewsTheBeliefExplainsNeverRebuildIt) {
   EXPECT_LT(rotationErrorDeg(estimator.mapOrientation(), truth()), 5.0);
 }
 
+// `cloud` with every twentieth finite point moved 10 mm along its ray, towards the camera or away:
+// the long tails of a stereo camera's depth, which keep even the right pose's verification below
+// search_below_score (PCL's real stereo scan: 0.90).
+pcl::PointCloud<pcl::PointXYZ> withDepthTails(pcl::PointCloud<pcl::PointXYZ> cloud) {
+  int finite = 0;
+  for (auto& p : cloud.points) {
+    if (!std::isfinite(p.z) || finite++ % 20 != 0) continue;
+    const Eigen::Vector3f ray = p.getVector3fMap().normalized();
+    p.getVector3fMap() += (finite % 40 == 1 ? 0.01f : -0.01f) * ray;
+  }
+  return cloud;
+}
+
+TEST_F(EstimatorRefinementTest, ANoisyCameraSearchesOnceNotOnEveryView) {
+  const auto [first, world_from_camera] = handleView();
+  const auto [second, second_pose] = viewFromAbove(worldFromObject());
+  OrientationEstimator estimator(model(), withIcp());
+  const ViewUpdate searched = estimator.update(withDepthTails(first), world_from_camera);
+  ASSERT_TRUE(searched.updated) << searched.skip_reason;
+  EXPECT_TRUE(searched.searched) << "the right pose should verify below search_below_score";
+  EXPECT_TRUE(searched.rebuild_reason.empty()) << searched.rebuild_reason;
+  // The search found nothing better: the next view that fits as well is this camera's normal.
+  const ViewUpdate next = estimator.update(withDepthTails(second), second_pose);
+  ASSERT_TRUE(next.updated) << next.skip_reason;
+  EXPECT_GE(next.refined_poses, 1) << next.refinement_skip_reason;
+  EXPECT_FALSE(next.searched);
+  EXPECT_LT(rotationErrorDeg(estimator.mapOrientation(), truth()), 5.0);
+  RecordProperty("first_view_refinement_ms", std::to_string(searched.timing.refinement));
+  RecordProperty("second_view_refinement_ms", std::to_string(next.timing.refinement));
+  // A reset forgets what the camera reaches: the first view after it searches again.
+  estimator.reset();
+  EXPECT_TRUE(estimator.update(withDepthTails(second), second_pose).searched);
+}
+
 TEST(BeliefCheckParametersTest, RefusesNonsense) {
   const auto refused = [](auto change) {
     BeliefCheckParameters parameters;

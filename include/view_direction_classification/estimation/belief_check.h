@@ -19,7 +19,9 @@ struct BeliefCheckParameters {
   // The search runs when refinement's best pose verifies below this on the view, or it kept none
   // and the belief's MAP (at the position estimate) verifies below this (a right pose of a whole
   // view verifies at 0.98-1.00; refinement keeps none when ICP cannot improve on a belief that
-  // is already right); 0: never.
+  // is already right); 0: never. Once a search finds nothing clearly better, later views search
+  // only below the score the belief's pose reached on that view minus rebuild_margin (the
+  // estimator's confirmed fit: what a noisier camera lets a right pose reach).
   double search_below_score = 0.95;
   // The search's best pose rebuilds the belief when its verification over the latest check_views
   // views (this one included) beats the belief's best pose's by more than this.

@@ -229,19 +229,22 @@ class OrientationEstimator {
                          const BinghamMixture& measurement, const Eigen::Vector4d& line_of_sight,
                          ViewUpdate* result);
   // Keeps `view` (thinned) among the latest check_views and, where the belief's best pose
-  // (refinement's, or without one the MAP at `position`) verifies below search_below_score on
+  // (refinement's, or without one the MAP at `position`) verifies below searchThreshold() on
   // it, searches beyond the belief (belief_check.h).
   void checkBeliefOnView(const RefinementView& view, const std::vector<RefinementView>& views,
                          const Eigen::Vector3d& position, const BinghamMixture& measurement,
                          const Eigen::Vector4d& line_of_sight, RefinementResult* refinement,
                          ViewUpdate* result);
-  // The search after the belief's best pose (refinement's, or its MAP) fitted poorly
-  // (belief_check.h): replaces *refinement with the search's result and rebuilds the belief
-  // from `measurement` when the geometry contradicts the belief.
+  // search_below_score, or lower once a search on this camera's views found nothing better
+  // than a belief pose that verified at confirmed_fit_score_: rebuild_margin below that.
+  double searchThreshold() const;
+  // The search after the belief's best pose (refinement's, or its MAP) fitted poorly, verifying
+  // at belief_score on this view (belief_check.h): replaces *refinement with the search's result
+  // and rebuilds the belief from `measurement` when the geometry contradicts the belief.
   void searchBeyondBelief(const std::vector<RefinementView>& views, const Eigen::Vector3d& position,
-                          const Eigen::Isometry3d& belief_pose, const BinghamMixture& measurement,
-                          const Eigen::Vector4d& line_of_sight, RefinementResult* refinement,
-                          ViewUpdate* result);
+                          const Eigen::Isometry3d& belief_pose, double belief_score,
+                          const BinghamMixture& measurement, const Eigen::Vector4d& line_of_sight,
+                          RefinementResult* refinement, ViewUpdate* result);
   // The search's hypotheses: every training direction's girdle along the line of sight, equally
   // weighted, in the fixed frame.
   BinghamMixture searchBelief(const Eigen::Vector4d& line_of_sight,
@@ -272,6 +275,12 @@ class OrientationEstimator {
   // judged on.
   std::shared_ptr<const PoseRefiner> search_refiner_;
   std::deque<RefinementView> check_views_;
+  // The score (at least refinement's min_score) the belief's best pose reached on the latest
+  // view a search confirmed it on (the search found no clearly better pose): what a right pose
+  // reaches with this camera, whose noise may keep it below search_below_score on every view (a
+  // stereo camera: 0.90). Later views search only when they fit clearly worse. Cleared with the
+  // belief.
+  std::optional<double> confirmed_fit_score_;
   // Only when selection.min_information_gain > 0.
   std::shared_ptr<const ViewUtilityScorer> gain_scorer_;
   // The MAP costs a search over every component: computed once per belief, on first request;
