@@ -13,14 +13,31 @@ jobs=${JOBS:-2}
 debug_info=${DEBUG_INFO:--g1}
 export PATH=/usr/bin:/bin:$PATH
 
+# The install space is inside the build directory, as catkin_make's is inside its workspace, but
+# in a hidden folder: roslaunch and rosrun search the whole package folder for a launch file or a
+# node by name, and a second copy of launch/ (an install in build/install) makes every
+# `roslaunch view_direction_classification X.launch` fail with "multiple files named". ROS's
+# resource search skips folders whose name starts with a dot. The install test (test/install)
+# installs there and builds a dependent package against it.
+install_prefix="$(realpath -m "$build_dir")/.install"
+if [[ -f "$build_dir/CMakeCache.txt" ]] &&
+    ! grep -qxF "CMAKE_INSTALL_PREFIX:PATH=$install_prefix" "$build_dir/CMakeCache.txt"; then
+  # A build directory configured before the install space moved: move it, and remove the old
+  # install tree that shadows the package's launch files.
+  if grep -qxF "CMAKE_INSTALL_PREFIX:PATH=$(realpath -m "$build_dir")/install" \
+      "$build_dir/CMakeCache.txt"; then
+    echo "build: moving the install space to $install_prefix (was $build_dir/install)"
+    rm -rf "$build_dir/install"
+    cmake "$build_dir" -DCMAKE_INSTALL_PREFIX="$install_prefix" > "$build_dir.configure.log" 2>&1 ||
+      { cat "$build_dir.configure.log" >&2; exit 1; }
+  fi
+fi
 if [[ ! -f "$build_dir/CMakeCache.txt" ]]; then
   # A failed configure caches bad values (e.g. a python without catkin_pkg): start clean.
-  # The install space is inside the build directory, as catkin_make's is inside its workspace;
-  # the install test (test/install) installs there and builds a dependent package against it.
   if ! cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
       -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O2 $debug_info -DNDEBUG" \
       -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 $debug_info -DNDEBUG" \
-      -DCMAKE_INSTALL_PREFIX="$(realpath -m "$build_dir")/install" \
+      -DCMAKE_INSTALL_PREFIX="$install_prefix" \
       -DPYTHON_EXECUTABLE=/usr/bin/python3 -DPython3_EXECUTABLE=/usr/bin/python3 \
       -DCATKIN_ENABLE_TESTING=ON > "$build_dir.configure.log" 2>&1; then
     cat "$build_dir.configure.log" >&2

@@ -37,12 +37,24 @@ set +u
 source "$build_dir/devel/setup.bash"
 set -u
 # The planner node is required: when it has written its results the launch shuts down.
+# roslaunch's whole output goes to $out/roslaunch.log; the terminal shows the progress lines.
+log="$out/roslaunch.log"
+set +e
 roslaunch view_direction_classification demo.launch model:="$model" views:="$views" \
-  utility:="$utility" output_dir:="$out" gui:=false output:=log 2>&1 \
-  | grep --line-buffered -E 'planner: |view [0-9]+: |FATAL|ERROR' || true
+  utility:="$utility" output_dir:="$out" gui:=false output:=log 2>&1 | tee "$log" \
+  | grep --line-buffered -E 'planner: |view [0-9]+: |FATAL|ERROR'
+launch_status=${PIPESTATUS[0]}
+set -e
 
 if [[ ! -f "$out/errors.csv" ]]; then
-  echo "demo: the planner wrote no $out/errors.csv (see the log above and ~/.ros/log/latest)" >&2
+  # Say why: roslaunch's own error (a launch file it cannot resolve, a missing argument, a node
+  # that cannot start) is only in its output, which the filter above hides.
+  {
+    echo "demo: the planner wrote no $out/errors.csv; roslaunch exited with status" \
+      "$launch_status. The end of its output ($log):"
+    tail -n 40 "$log" | sed -e 's/\x1b\[[0-9;]*m//g' -e 's/^/  | /'
+    echo "demo: each node's own output is in ~/.ros/log/latest/"
+  } >&2
   exit 1
 fi
 echo

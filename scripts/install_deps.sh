@@ -28,6 +28,8 @@ packages=(
   libboost-dev libassimp-dev libcli11-dev nlohmann-json3-dev libpng-dev
   # tests, benchmarks and plots
   libgtest-dev libbenchmark-dev python3-matplotlib
+  # the node reference test reads config/*.yaml
+  libyaml-cpp-dev
   # the single-view baseline of `vdc evaluate` (OpenCV surface_matching PPF detector)
   libopencv-contrib-dev libopencv-dev
 )

@@ -1,7 +1,10 @@
 // The package as a dependency: installed into its install space (scripts/build.sh puts it inside
-// the build directory, as catkin_make does in a workspace), a catkin package that depends on it
-// builds and links the core through catkin's exports alone, and the installed `vdc` runs with the
-// plot scripts installed beside it (not the source tree's).
+// the build directory, as catkin_make does in a workspace, in the hidden folder .install), a
+// catkin package that depends on it builds and links the core through catkin's exports alone, and
+// the installed `vdc` runs with the plot scripts installed beside it (not the source tree's).
+// After the install, the source tree's launch files still resolve by package name and the demo
+// runs: roslaunch searches the whole package folder, and an install tree inside it that it does
+// not skip holds a second demo.launch ("multiple files named [demo.launch] in package").
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -55,6 +58,21 @@ class InstalledPackage : public ::testing::Test {
                       (installPrefix() / "setup.bash").string() + "' && " + command + "\"");
   }
 
+  // Runs `command` with the build's devel space sourced and a master port of this test's own.
+  static vdc::test::CommandRun runDeveloped(const std::string& command) {
+    const std::string master = "http://localhost:" + std::to_string(20000 + ::getpid() % 20000);
+    return runCommand(
+        "bash -c \"export PATH=/usr/bin:/bin:\\$PATH ROS_HOSTNAME=localhost "
+        "ROS_MASTER_URI=" +
+        master + " && . '" VDC_BINARY_DIR "/devel/setup.bash' && " + command + "\"");
+  }
+  // `make demo`'s script on the quick model, two views, headless.
+  static vdc::test::CommandRun runDemo(const fs::path& out) {
+    return runDeveloped("cd '" VDC_SOURCE_DIR "' && BUILD_DIR='" VDC_BINARY_DIR "' DEMO_MODEL='" +
+                        quickModel() + "' DEMO_VIEWS=2 DEMO_OUT='" + out.string() +
+                        "' scripts/demo.sh");
+  }
+
   static fs::path root_;
   static vdc::test::CommandRun install_run_;
 };
@@ -105,6 +123,45 @@ TEST_F(InstalledPackage, TheInstalledToolRunsTheScriptsInstalledBesideIt) {
   fs::rename(root_ / "scripts_moved_away", scripts);
   EXPECT_EQ(without.exit_code, 1) << without.output;
   EXPECT_NE(without.output.find(scripts.string()), std::string::npos) << without.output;
+}
+
+TEST_F(InstalledPackage, EveryLaunchFileStillResolvesByPackageNameToTheSourceTree) {
+  for (const auto& file : fs::directory_iterator(VDC_SOURCE_DIR "/launch")) {
+    const std::string name = file.path().filename().string();
+    const auto run = runDeveloped(
+        "/usr/bin/python3 -c 'import roslaunch.rlutil as r, sys; "
+        "print(r.resolve_launch_arguments(sys.argv[1:]))' view_direction_classification " +
+        name);
+    EXPECT_EQ(run.exit_code, 0) << name << ": " << run.output;
+    EXPECT_NE(run.output.find(fs::canonical(file.path()).string()), std::string::npos)
+        << name << ": " << run.output;
+  }
+}
+
+TEST_F(InstalledPackage, TheDemoRunsByPackageNameAfterTheInstall) {
+  const fs::path out = root_ / "demo";
+  const auto run = runDemo(out);
+  EXPECT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_TRUE(fs::is_regular_file(out / "errors.csv")) << run.output;
+  EXPECT_NE(run.output.find("view  2: error"), std::string::npos) << run.output;
+}
+
+// A second demo.launch where roslaunch searches (what an install inside the package folder
+// made): the demo fails and prints roslaunch's own reason, not a pointer to an empty log.
+TEST_F(InstalledPackage, AFailingDemoPrintsRoslaunchsOwnError) {
+  const std::string source = fs::weakly_canonical(VDC_SOURCE_DIR).string();
+  const std::string build = fs::weakly_canonical(VDC_BINARY_DIR).string();
+  if (build.rfind(source + "/", 0) != 0) {
+    GTEST_SKIP() << "the build directory is outside the package folder: roslaunch never sees it";
+  }
+  const fs::path clash = fs::path(VDC_BINARY_DIR) / "launch_name_clash";
+  fs::create_directories(clash);
+  fs::copy_file(VDC_SOURCE_DIR "/launch/demo.launch", clash / "demo.launch",
+                fs::copy_options::overwrite_existing);
+  const auto run = runDemo(root_ / "failing_demo");
+  fs::remove_all(clash);
+  EXPECT_EQ(run.exit_code, 1) << run.output;
+  EXPECT_NE(run.output.find("multiple files named [demo.launch]"), std::string::npos) << run.output;
 }
 
 }  // namespace
