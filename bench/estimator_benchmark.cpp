@@ -317,8 +317,9 @@ double threadCpuMilliseconds() {
 void timeRefinement(benchmark::State& state, const vdc::PoseRefiner& refiner, const View& view) {
   const vdc::BinghamMixture belief = trueGirdle(view);
   const Eigen::Vector3d position = worldFromObject().translation();
+  // The rendered mug alone: no scene beside it.
   vdc::RefinementView input{pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>(view.cloud),
-                            view.world_from_camera};
+                            view.world_from_camera, nullptr};
   vdc::RefinementResult result;
   // refine() runs on this thread alone: its own CPU time is what it costs, whatever else the
   // machine runs (the wall time on a shared machine is not).

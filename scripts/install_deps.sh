@@ -41,24 +41,40 @@ for option in "$@"; do
   esac
 done
 
-# PCL's real stereo scan of a mug on a table (BSD-3), the input of the real-scan test
-# (test/estimation/real_scan_test.cpp): the one .pcd file out of Debian's python3-pcl, unpacked into
-# a cache (not installed; test/estimation/CMakeLists.txt looks there). Without the archive the test
-# is skipped, with a message saying so.
+# PCL's real scans (BSD-3), out of Debian's python3-pcl, unpacked into a cache (not installed):
+# the stereo scan of a mug on a table, the input of the real-scan test
+# (test/estimation/real_scan_test.cpp), and the Kinect scene of a milk carton among other objects
+# with the carton cut out of it, the input of the scene segmentation test
+# (test/scene/scene_segmentation_test.cpp). The tests' CMakeLists look there; without the archive
+# those tests are skipped, with a message saying so.
+real_scans=(
+  table_scene_mug_stereo_textured.pcd
+  correspondence_grouping/milk_cartoon_all_small_clorox.pcd
+  correspondence_grouping/milk.pcd
+)
 fetch_real_scan() {
   local cache=${XDG_CACHE_HOME:-$HOME/.cache}/view_direction_classification
-  local name=table_scene_mug_stereo_textured.pcd
-  [[ -s "$cache/$name" ]] && return 0
+  local tutorials=usr/share/doc/python3-pcl/examples/pcldata/tutorials
+  local wanted=()
+  for name in "${real_scans[@]}"; do
+    [[ -s "$cache/$(basename "$name")" ]] || wanted+=("$name")
+  done
+  [[ ${#wanted[@]} -eq 0 ]] && return 0
   local work
   work=$(mktemp -d)
   if (cd "$work" && apt-get download -qq python3-pcl >/dev/null 2>&1) &&
-      dpkg-deb -x "$work"/python3-pcl_*.deb "$work/root" &&
-      [[ -s "$work/root/usr/share/doc/python3-pcl/examples/pcldata/tutorials/$name" ]]; then
+      dpkg-deb -x "$work"/python3-pcl_*.deb "$work/root"; then
     mkdir -p "$cache"
-    cp "$work/root/usr/share/doc/python3-pcl/examples/pcldata/tutorials/$name" "$cache/$name"
-    echo "install_deps: PCL's real scan is in $cache/$name"
+    for name in "${wanted[@]}"; do
+      if [[ -s "$work/root/$tutorials/$name" ]]; then
+        cp "$work/root/$tutorials/$name" "$cache/$(basename "$name")"
+        echo "install_deps: PCL's real scan is in $cache/$(basename "$name")"
+      else
+        echo "install_deps: python3-pcl has no $name: its test will be skipped" >&2
+      fi
+    done
   else
-    echo "install_deps: could not fetch python3-pcl (apt-get download): the real-scan test" \
+    echo "install_deps: could not fetch python3-pcl (apt-get download): the real-scan tests" \
       "will be skipped" >&2
   fi
   rm -rf "$work"

@@ -10,6 +10,7 @@
 #include "view_direction_classification/bingham/bingham.h"
 #include "view_direction_classification/common/error.h"
 #include "view_direction_classification/common/quaternion.h"
+#include "view_direction_classification/estimation/verification_scene.h"
 #include "view_direction_classification/estimation/view_measurement.h"
 #include "view_direction_classification/features/fpfh_features.h"
 #include "view_direction_classification/learning/feature_selection.h"
@@ -299,7 +300,8 @@ ViewUpdate OrientationEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cl
   const Clock::time_point fused = Clock::now();
   result.timing.fusion = millisecondsBetween(measured, fused);
   if (refiner_) {
-    refineAfterFusion(object.points, world_from_camera, measurement, line_of_sight, &result);
+    refineAfterFusion(object.points, verificationScene(cloud, object, segmentation),
+                      world_from_camera, measurement, line_of_sight, &result);
   }
   const Clock::time_point refined = Clock::now();
   result.timing.refinement = millisecondsBetween(fused, refined);
@@ -308,6 +310,7 @@ ViewUpdate OrientationEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cl
 }
 
 void OrientationEstimator::refineAfterFusion(const pcl::PointCloud<pcl::PointXYZ>& object_points,
+                                             pcl::PointCloud<pcl::PointXYZ>::ConstPtr scene,
                                              const Eigen::Isometry3d& world_from_camera,
                                              const BinghamMixture& measurement,
                                              const Eigen::Vector4d& line_of_sight,
@@ -317,6 +320,7 @@ void OrientationEstimator::refineAfterFusion(const pcl::PointCloud<pcl::PointXYZ
   RefinementView view;
   view.points = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>(object_points);
   view.world_from_camera = world_from_camera;
+  view.scene = std::move(scene);
   std::vector<RefinementView> views{view};
   views.insert(views.end(), refined_views_.begin(), refined_views_.end());
   const Eigen::Vector3d position = positionEstimate().value_or(result->observed_centroid_world);

@@ -142,7 +142,7 @@ Observation finitePoints(const std::vector<RefinementView>& views) {
       q.getVector3fMap() = world_from_camera * p.getVector3fMap();
       observation.world->push_back(q);
     }
-    observation.views.push_back({finite, view.world_from_camera});
+    observation.views.push_back({finite, view.world_from_camera, view.scene});
   }
   const std::size_t first_count =
       observation.views.empty() ? 0 : observation.views[0].points->size();
@@ -629,8 +629,9 @@ void restartFrom(std::size_t seed_index, const ModelSurface& surface, const Alig
 
 }  // namespace
 
+// The scene is kept whole: the verifier indexes only its points around the object.
 RefinementView thinnedView(const RefinementView& view, double voxel) {
-  return {voxelFiltered(view.points, voxel), view.world_from_camera};
+  return {voxelFiltered(view.points, voxel), view.world_from_camera, view.scene};
 }
 
 PoseRefiner::PoseRefiner(std::shared_ptr<const ModelSurface> surface,

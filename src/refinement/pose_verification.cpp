@@ -42,31 +42,72 @@ PoseVerifier::PoseVerifier(std::shared_ptr<const ModelSurface> surface,
   checkVerificationParameters(parameters_);
   neighbour_radius_ = std::max(0.004, 2.0 * surface_->spacing());
   for (const RefinementView& view : views) {
-    if (!view.points || view.points->empty()) continue;
-    auto indexed = std::make_unique<IndexedView>();
-    auto points = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
-    std::vector<Eigen::Vector3f> rays;
-    std::vector<Eigen::Vector2f> flat;  // the same rays in the image plane, for the footprint
-    points->reserve(view.points->size());
-    rays.reserve(view.points->size());
-    flat.reserve(view.points->size());
-    for (const auto& p : view.points->points) {
-      const Eigen::Vector2f ray(p.x / p.z, p.y / p.z);
-      // A point at no depth, or 89.99994 degrees or more off the optical axis, is in no camera's
-      // image; its ray would be infinite or near a float's maximum, where a k-d tree's split
-      // overflows (doc/hardening.md).
-      if (!(p.z > 0.0f) || !(ray.cwiseAbs().maxCoeff() <= kMaxRayTangent)) continue;
-      points->push_back(p);
-      flat.push_back(ray);
-      rays.emplace_back(ray.x(), ray.y(), 0.0f);
-    }
-    if (points->empty()) continue;
-    indexed->points = points;
-    indexed->footprint = convexHull(std::move(flat));
-    indexed->rays = std::make_unique<const NearestPoints>(std::move(rays));
-    indexed->camera_from_world = view.world_from_camera.inverse();
-    views_.push_back(std::move(indexed));
+    if (auto indexed = indexView(view)) views_.push_back(std::move(indexed));
   }
+}
+
+namespace {
+
+// A point at no depth, or 89.99994 degrees or more off the optical axis, is in no camera's
+// image; its ray would be infinite or near a float's maximum, where a k-d tree's split overflows
+// (doc/hardening.md).
+bool hasRay(const pcl::PointXYZ& p) {
+  return p.z > 0.0f && std::abs(p.x / p.z) <= kMaxRayTangent &&
+         std::abs(p.y / p.z) <= kMaxRayTangent;
+}
+
+std::unique_ptr<const NearestPoints> rayIndexOf(const pcl::PointCloud<pcl::PointXYZ>& points) {
+  std::vector<Eigen::Vector3f> rays;
+  rays.reserve(points.size());
+  for (const auto& p : points.points) rays.emplace_back(p.x / p.z, p.y / p.z, 0.0f);
+  return std::make_unique<const NearestPoints>(std::move(rays));
+}
+
+}  // namespace
+
+std::unique_ptr<PoseVerifier::IndexedView> PoseVerifier::indexView(
+    const RefinementView& view) const {
+  if (!view.points || view.points->empty()) return nullptr;
+  auto indexed = std::make_unique<IndexedView>();
+  auto points = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  std::vector<Eigen::Vector2f> flat;  // the rays in the image plane, for the footprint
+  points->reserve(view.points->size());
+  flat.reserve(view.points->size());
+  for (const auto& p : view.points->points) {
+    if (!hasRay(p)) continue;
+    points->push_back(p);
+    flat.emplace_back(p.x / p.z, p.y / p.z);
+  }
+  if (points->empty()) return nullptr;
+  indexed->object = {points, rayIndexOf(*points)};
+  indexed->footprint = convexHull(std::move(flat));
+  indexed->camera_from_world = view.world_from_camera.inverse();
+  if (view.scene) indexed->scene = indexScene(*view.scene, *points);
+  return indexed;
+}
+
+// Only the scene's points whose rays can meet a pose of the model near the object's points: the
+// object's ray box grown by the model's diagonal at the object's nearest depth. A whole VGA cloud
+// would cost a k-d tree of 300 000 rays per view; this keeps the cost to the object's surroundings.
+PoseVerifier::RayIndex PoseVerifier::indexScene(
+    const pcl::PointCloud<pcl::PointXYZ>& scene,
+    const pcl::PointCloud<pcl::PointXYZ>& object) const {
+  Eigen::AlignedBox2f box;
+  float nearest_z = std::numeric_limits<float>::infinity();
+  for (const auto& p : object.points) {
+    box.extend(Eigen::Vector2f(p.x / p.z, p.y / p.z));
+    nearest_z = std::min(nearest_z, p.z);
+  }
+  const float margin = static_cast<float>(surface_->diagonal() + neighbour_radius_) / nearest_z;
+  box.min().array() -= margin;
+  box.max().array() += margin;
+  auto near = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  for (const auto& p : scene.points) {
+    if (hasRay(p) && box.contains(Eigen::Vector2f(p.x / p.z, p.y / p.z))) near->push_back(p);
+  }
+  if (near->empty()) return {};
+  RayIndex index{near, rayIndexOf(*near)};
+  return index;
 }
 
 double PoseVerifier::inlierTolerance(double z) const {
@@ -101,8 +142,9 @@ void PoseVerifier::addViewScore(const IndexedView& view, const Eigen::Isometry3d
   // The observed half: is each point on the model's surface?
   const auto& model = *surface_->cloud();
   std::vector<Eigen::Vector3f> queries;
-  queries.reserve(view.points->size());
-  for (const auto& p : view.points->points) {
+  const auto& observed = *view.object.points;
+  queries.reserve(observed.size());
+  for (const auto& p : observed.points) {
     queries.push_back(object_from_camera * p.getVector3fMap());
   }
   surface_->nearest().search(queries, &index, &squared, neighbour_radius_);
@@ -111,7 +153,7 @@ void PoseVerifier::addViewScore(const IndexedView& view, const Eigen::Isometry3d
     if (index[i] < 0 || squared[i] > radius_sq) continue;
     const auto& sample = model[index[i]];
     const float offset = sample.getNormalVector3fMap().dot(queries[i] - sample.getVector3fMap());
-    if (std::abs(offset) <= inlierTolerance((*view.points)[i].z)) ++*inliers;
+    if (std::abs(offset) <= inlierTolerance(observed[i].z)) ++*inliers;
   }
 
   // The predicted half: is each camera-facing sample where the camera saw a surface?
@@ -129,19 +171,24 @@ void PoseVerifier::addViewScore(const IndexedView& view, const Eigen::Isometry3d
     nearest_z = std::min(nearest_z, m.z());
   }
   score->predicted += static_cast<int>(predicted.size());
-  view.rays->search(rays, &index, &squared, neighbour_radius_ / nearest_z);
+  // Against the scene's depth where it is given, else against the object's points.
+  const RayIndex& seen = view.scene.rays ? view.scene : view.object;
+  seen.rays->search(rays, &index, &squared, neighbour_radius_ / nearest_z);
   for (std::size_t i = 0; i < predicted.size(); ++i) {
     const float ray_radius = static_cast<float>(neighbour_radius_) / predicted[i].z();
     if (index[i] < 0 || squared[i] > ray_radius * ray_radius) {
+      // Nothing seen on this ray (no return, or a scene point left out such as the table): a
+      // contradiction inside the object's footprint; outside it hidden or cropped away, for all
+      // we know.
       if (parameters_.judge_only_within_footprint &&
           !insideConvexPolygon(view.footprint, rays[i].head<2>(), ray_radius)) {
-        --score->predicted;  // hidden or cropped away, for all we know: not judged
+        --score->predicted;
         continue;
       }
       ++*violations;  // predicted where nothing was seen
       continue;
     }
-    const float observed_z = (*view.points)[index[i]].z;
+    const float observed_z = (*seen.points)[index[i]].z;
     if (predicted[i].z() < observed_z - freeSpaceTolerance(observed_z)) {
       ++*violations;
     }

@@ -20,6 +20,7 @@
 #include "view_direction_classification/geometry/camera.h"
 #include "view_direction_classification/geometry/depth_renderer.h"
 #include "view_direction_classification/geometry/mug_mesh.h"
+#include "view_direction_classification/geometry/scene.h"
 #include "view_direction_classification/geometry/surface_sampling.h"
 
 namespace vdc {
@@ -90,7 +91,39 @@ class PoseRefinerTest : public ::testing::Test {
         DepthRenderer(*mesh_).render(camera_from_object, DepthNoiseModel{true}, &rng));
     return result;
   }
+  // The view from `direction` with a 3 cm bar standing 18 cm in front of the mug across its
+  // middle, upright in the image: `scene` is every point the camera saw, `points` the mug's own
+  // (the pixels where the scene's depth is the mug's).
+  RefinementView behindABar(const Eigen::Vector3d& direction, double roll) {
+    RefinementView v = view(direction, roll);
+    const Eigen::Vector3d centre = world_from_object_ * mesh_->bounds().center().cast<double>();
+    const Eigen::Vector3d camera = v.world_from_camera.translation();
+    const Eigen::Matrix3d camera_axes = v.world_from_camera.linear();
+    // The bar's length (its z) along the image's y axis, its foot 20 cm below the centre.
+    ScenePart bar{distractorMesh("box 0.03 0.03 0.4"), Eigen::Isometry3d::Identity()};
+    bar.world_from_part.linear() << camera_axes.col(2), camera_axes.col(0), camera_axes.col(1);
+    bar.world_from_part.translation() =
+        centre + 0.18 * (camera - centre).normalized() - 0.2 * camera_axes.col(1);
+    Scene scene;
+    scene.object = {*mesh_, world_from_object_};
+    scene.distractors.push_back(bar);
+    const Eigen::Isometry3d camera_from_world = v.world_from_camera.inverse();
+    std::mt19937 rng(5);
+    auto seen = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>(
+        DepthRenderer(sceneMesh(scene)).render(camera_from_world, DepthNoiseModel{true}, &rng));
+    const std::vector<float> mug_depth =
+        DepthRenderer(*mesh_).renderDepth(camera_from_world * world_from_object_);
+    auto object = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+    for (std::size_t i = 0; i < seen->size(); ++i) {
+      const float z = (*seen)[i].z;
+      if (mug_depth[i] > 0.0f && std::abs(z - mug_depth[i]) < 0.01f) object->push_back((*seen)[i]);
+    }
+    v.points = object;
+    v.scene = seen;
+    return v;
+  }
   Eigen::Vector4d truth() const { return orientationOf(world_from_object_); }
+
   Eigen::Vector3d position() const { return world_from_object_.translation(); }
   // The view's girdle (roll free) in the fixed frame.
   BinghamMixture girdleBelief(const Eigen::Vector3d& direction, const RefinementView& v) const {
@@ -426,6 +459,39 @@ TEST_F(PoseRefinerTest, AViewCroppedToThePatchAroundTheHandleStillVerifiesTheTru
   everywhere.judge_only_within_footprint = false;
   const PoseVerifier everywhere_verifier(*surface_, {v}, everywhere);
   EXPECT_LT(everywhere_verifier.score(world_from_object_).score(), 0.5);
+}
+
+TEST_F(PoseRefinerTest, AnObjectHiddenBehindABarKeepsItsTruePoseAgainstTheWholeScene) {
+  const RefinementView unoccluded = view(kHandleSideOn, 0.7);
+  const auto visible = std::count_if(unoccluded.points->begin(), unoccluded.points->end(),
+                                     [](const pcl::PointXYZ& p) { return std::isfinite(p.z); });
+  const RefinementView v = behindABar(kHandleSideOn, 0.7);
+  // The bar hides a band across the mug's middle, inside the footprint of what is left.
+  ASSERT_LT(v.points->size(), visible * 85 / 100);
+  ASSERT_GT(v.points->size(), visible * 40 / 100);
+
+  RefinementView object_only = v;
+  object_only.scene = nullptr;
+  const VerificationScore alone = PoseVerifier(*surface_, {object_only}).score(world_from_object_);
+  const PoseVerifier whole_scene(*surface_, {v});
+  const VerificationScore with_scene = whole_scene.score(world_from_object_);
+  // Against the mug's points alone, the hidden band is a surface that is not there: the true pose
+  // falls below refinement's acceptance (0.8). The scene's bar explains it.
+  RecordProperty("true_pose_score_object_only", std::to_string(alone.score()));
+  RecordProperty("true_pose_score_whole_scene", std::to_string(with_scene.score()));
+  EXPECT_LT(alone.score(), 0.8) << alone.inlier_fraction << " " << alone.violation_fraction;
+  EXPECT_GT(with_scene.score(), 0.9)
+      << with_scene.inlier_fraction << " " << with_scene.violation_fraction;
+  // The scene does not excuse a wrong pose: the mirrored handle still contradicts it.
+  Eigen::Isometry3d mirrored = world_from_object_;
+  mirrored.linear() = quaternionToRotationMatrix(turnedAboutSight(v, M_PI));
+  RecordProperty("mirrored_score_whole_scene", std::to_string(whole_scene.score(mirrored).score()));
+  EXPECT_LT(whole_scene.score(mirrored).score(), with_scene.score() - 0.3);
+  // Nor a pose moved 2 cm towards the camera, into the space in front of the mug it saw through.
+  Eigen::Isometry3d nearer = world_from_object_;
+  nearer.translation() +=
+      0.02 * (v.world_from_camera.translation() - nearer.translation()).normalized();
+  EXPECT_LT(whole_scene.score(nearer).score(), with_scene.score() - 0.3);
 }
 
 TEST_F(PoseRefinerTest, RefusesIcpThatDivergesOrDoesNotConverge) {

@@ -224,7 +224,9 @@ class OrientationEstimator {
   // its best pose fits the view poorly, which may rebuild the belief (belief_check.h).
   // measurement: the view's, in the fixed frame (a rebuilt belief starts from it);
   // line_of_sight: q_CL, the camera frame's turn onto the ray to the object.
+  // `scene`: what else the camera saw (verificationScene; null: the object's points alone).
   void refineAfterFusion(const pcl::PointCloud<pcl::PointXYZ>& object_points,
+                         pcl::PointCloud<pcl::PointXYZ>::ConstPtr scene,
                          const Eigen::Isometry3d& world_from_camera,
                          const BinghamMixture& measurement, const Eigen::Vector4d& line_of_sight,
                          ViewUpdate* result);

@@ -18,6 +18,13 @@ namespace vdc {
 struct RefinementView {
   pcl::PointCloud<pcl::PointXYZ>::ConstPtr points;
   Eigen::Isometry3d world_from_camera = Eigen::Isometry3d::Identity();
+  // Optional: the whole scene the camera saw (camera frame, the object's points among the rest;
+  // NaN and points behind the camera are ignored). When given, the model's predicted surface is
+  // judged against the scene's depth rather than the object's points alone: a sample behind a
+  // scene point is hidden by it (an occluder explains it), a sample in front of one is a surface
+  // the camera saw through; on a ray without a scene point the footprint rule below applies, as
+  // without a scene. So an object partly hidden by another keeps its right pose.
+  pcl::PointCloud<pcl::PointXYZ>::ConstPtr scene;
 };
 
 struct VerificationParameters {
@@ -78,12 +85,21 @@ class PoseVerifier {
   VerificationScore score(const Eigen::Isometry3d& world_from_object) const;
 
  private:
-  struct IndexedView {
+  // Points indexed by their rays (x/z, y/z, 0).
+  struct RayIndex {
     pcl::PointCloud<pcl::PointXYZ>::ConstPtr points;
-    std::unique_ptr<const NearestPoints> rays;  // (x/z, y/z, 0) of each point
-    Eigen::Isometry3d camera_from_world;
-    std::vector<Eigen::Vector2f> footprint;  // convex hull of the rays, counter-clockwise
+    std::unique_ptr<const NearestPoints> rays;
   };
+  struct IndexedView {
+    RayIndex object;
+    // The scene's points near the object's rays (empty: verified against the object alone).
+    RayIndex scene;
+    Eigen::Isometry3d camera_from_world;
+    std::vector<Eigen::Vector2f> footprint;  // convex hull of the object's rays, counter-clockwise
+  };
+  std::unique_ptr<IndexedView> indexView(const RefinementView& view) const;
+  RayIndex indexScene(const pcl::PointCloud<pcl::PointXYZ>& scene,
+                      const pcl::PointCloud<pcl::PointXYZ>& object) const;
   void addViewScore(const IndexedView& view, const Eigen::Isometry3d& world_from_object,
                     int* inliers, int* violations, VerificationScore* score) const;
 

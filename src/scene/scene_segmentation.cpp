@@ -1,0 +1,201 @@
+#include "view_direction_classification/scene/scene_segmentation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <string>
+
+#include "candidate_shape.h"
+#include "object_clusters.h"
+#include "support_planes.h"
+#include "touching_split.h"
+#include "view_direction_classification/common/error.h"
+
+namespace vdc {
+namespace {
+
+void require(bool valid, const char* name, double value, const char* requirement) {
+  if (valid) return;
+  std::ostringstream message;
+  message << "scene segmentation parameter " << name << " is " << value << ", it must be "
+          << requirement;
+  throw Error(message.str());
+}
+
+bool positive(double value) { return std::isfinite(value) && value > 0.0; }
+
+std::vector<int> finiteIndices(const pcl::PointCloud<pcl::PointXYZ>& cloud) {
+  std::vector<int> finite;
+  finite.reserve(cloud.size());
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    const pcl::PointXYZ& p = cloud[i];
+    if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z))
+      finite.push_back(static_cast<int>(i));
+  }
+  return finite;
+}
+
+bool largerFirst(const std::vector<int>& a, const std::vector<int>& b) {
+  // Ties by the first index, so that the order does not depend on how PCL listed the clusters.
+  if (a.size() != b.size()) return a.size() > b.size();
+  return a.front() < b.front();
+}
+
+// Drops clusters over max_cluster_points and all but the max_candidates largest (the cost of
+// splitting and describing them is bounded so), counting and explaining the drops.
+void capClusters(std::vector<std::vector<int>>* clusters,
+                 const SceneSegmentationParameters& parameters, SceneSegments* result) {
+  const std::size_t before = clusters->size();
+  clusters->erase(std::remove_if(clusters->begin(), clusters->end(),
+                                 [&](const std::vector<int>& cluster) {
+                                   return cluster.size() >
+                                          static_cast<std::size_t>(parameters.max_cluster_points);
+                                 }),
+                  clusters->end());
+  if (const std::size_t large = before - clusters->size(); large > 0) {
+    result->dropped_clusters += static_cast<int>(large);
+    result->note += std::to_string(large) + " cluster(s) of more than " +
+                    std::to_string(parameters.max_cluster_points) +
+                    " points dropped (max_cluster_points: background, not an object); ";
+  }
+  std::sort(clusters->begin(), clusters->end(), largerFirst);
+  if (clusters->size() > static_cast<std::size_t>(parameters.max_candidates)) {
+    const std::size_t excess =
+        clusters->size() - static_cast<std::size_t>(parameters.max_candidates);
+    clusters->resize(static_cast<std::size_t>(parameters.max_candidates));
+    result->dropped_clusters += static_cast<int>(excess);
+    result->note += std::to_string(excess) + " smallest cluster(s) dropped (max_candidates " +
+                    std::to_string(parameters.max_candidates) + "); ";
+  }
+}
+
+// The support most of the candidate's points stand on (-1: none).
+int supportOf(const std::vector<int>& indices, const std::vector<int>& standing) {
+  std::map<int, int> votes;
+  for (const int i : indices) ++votes[standing[static_cast<std::size_t>(i)]];
+  int best = -1, most = 0;
+  for (const auto& [plane, count] : votes) {
+    if (plane >= 0 && count > most) {
+      best = plane;
+      most = count;
+    }
+  }
+  return best;
+}
+
+// The candidates of the (capped) clusters: each split into its objects, described, largest first.
+std::vector<SceneCandidate> candidatesOf(const pcl::PointCloud<pcl::PointXYZ>& cloud,
+                                         const std::vector<std::vector<int>>& clusters,
+                                         const std::vector<int>& standing,
+                                         const SceneSegmentationParameters& parameters) {
+  std::vector<std::vector<int>> objects;
+  for (const std::vector<int>& cluster : clusters) {
+    std::vector<std::vector<int>> parts = parameters.split_touching
+                                              ? scene::splitTouching(cloud, cluster, parameters)
+                                              : std::vector<std::vector<int>>{cluster};
+    for (std::vector<int>& part : parts) {
+      if (part.size() < static_cast<std::size_t>(parameters.min_cluster_points)) continue;
+      std::sort(part.begin(), part.end());
+      objects.push_back(std::move(part));
+    }
+  }
+  std::sort(objects.begin(), objects.end(), largerFirst);
+  std::vector<SceneCandidate> candidates(objects.size());
+  for (std::size_t c = 0; c < objects.size(); ++c) {
+    candidates[c].indices = std::move(objects[c]);
+    scene::describeShape(cloud, &candidates[c]);
+    candidates[c].support = supportOf(candidates[c].indices, standing);
+  }
+  return candidates;
+}
+
+// A shared pointer to the caller's cloud for PCL's interfaces, which take one; it does not own
+// the cloud (the caller's outlives this call), so nothing is copied.
+pcl::PointCloud<pcl::PointXYZ>::ConstPtr borrowed(const pcl::PointCloud<pcl::PointXYZ>& cloud) {
+  return pcl::PointCloud<pcl::PointXYZ>::ConstPtr(&cloud,
+                                                  [](const pcl::PointCloud<pcl::PointXYZ>*) {});
+}
+
+}  // namespace
+
+void checkSceneSegmentationParameters(const SceneSegmentationParameters& p) {
+  require(positive(p.plane_distance), "plane_distance", p.plane_distance, "positive [m]");
+  require(p.min_plane_points >= 3, "min_plane_points", p.min_plane_points, "at least 3");
+  require(std::isfinite(p.min_plane_width) && p.min_plane_width >= 0, "min_plane_width",
+          p.min_plane_width, "0 or more [m]");
+  require(positive(p.plane_angle_deg) && p.plane_angle_deg < 90, "plane_angle_deg",
+          p.plane_angle_deg, "between 0 and 90 [deg]");
+  require(std::isfinite(p.max_support_tilt_deg) && p.max_support_tilt_deg >= 0 &&
+              p.max_support_tilt_deg <= 90,
+          "max_support_tilt_deg", p.max_support_tilt_deg, "between 0 and 90 [deg]");
+  require(p.max_support_planes >= 0, "max_support_planes", p.max_support_planes, "0 or more");
+  require(positive(p.max_height_above_plane) && p.max_height_above_plane > p.plane_distance,
+          "max_height_above_plane", p.max_height_above_plane,
+          "finite and more than plane_distance [m]");
+  require(positive(p.cluster_tolerance), "cluster_tolerance", p.cluster_tolerance, "positive [m]");
+  require(p.min_cluster_points >= 1, "min_cluster_points", p.min_cluster_points, "at least 1");
+  require(p.max_cluster_points >= p.min_cluster_points, "max_cluster_points", p.max_cluster_points,
+          "at least min_cluster_points");
+  require(p.max_candidates >= 1, "max_candidates", p.max_candidates, "at least 1");
+  require(positive(p.supervoxel_voxel), "supervoxel_voxel", p.supervoxel_voxel, "positive [m]");
+  require(positive(p.supervoxel_seed) && p.supervoxel_seed >= p.supervoxel_voxel, "supervoxel_seed",
+          p.supervoxel_seed, "finite and at least supervoxel_voxel [m]");
+  require(std::isfinite(p.concavity_tolerance_deg) && p.concavity_tolerance_deg >= 0 &&
+              p.concavity_tolerance_deg < 180,
+          "concavity_tolerance_deg", p.concavity_tolerance_deg, "in [0, 180) [deg]");
+  require(
+      std::isfinite(p.min_part_fraction) && p.min_part_fraction >= 0 && p.min_part_fraction <= 0.5,
+      "min_part_fraction", p.min_part_fraction, "in [0, 0.5]");
+}
+
+SceneSegments segmentScene(const pcl::PointCloud<pcl::PointXYZ>& cloud,
+                           const SceneSegmentationParameters& parameters) {
+  checkSceneSegmentationParameters(parameters);
+  SceneSegments result;
+  const std::vector<int> finite = finiteIndices(cloud);
+  if (finite.size() < static_cast<std::size_t>(parameters.min_cluster_points)) {
+    result.note =
+        "fewer finite points (" + std::to_string(finite.size()) + ") than min_cluster_points";
+    return result;
+  }
+  result.organised = cloud.isOrganized() && cloud.width >= scene::kMinOrganisedSide &&
+                     cloud.height >= scene::kMinOrganisedSide;
+  const auto view = borrowed(cloud);
+  if (parameters.max_support_planes > 0) {
+    result.planes = result.organised ? scene::findOrganisedSupportPlanes(view, parameters)
+                                     : scene::findRansacSupportPlanes(cloud, finite, parameters);
+  }
+  const std::vector<int> standing = scene::standingOn(cloud, finite, result.planes, parameters);
+  std::vector<std::vector<int>> clusters;
+  if (result.organised) {
+    clusters = scene::organisedClusters(view, standing, parameters.cluster_tolerance,
+                                        parameters.min_cluster_points);
+  } else {
+    std::vector<int> objects;
+    for (const int i : finite) {
+      if (standing[static_cast<std::size_t>(i)] != scene::kNotStanding) objects.push_back(i);
+    }
+    clusters = scene::euclideanClusters(cloud, objects, parameters.cluster_tolerance,
+                                        parameters.min_cluster_points);
+  }
+  capClusters(&clusters, parameters, &result);
+  result.candidates = candidatesOf(cloud, clusters, standing, parameters);
+  if (result.candidates.size() > static_cast<std::size_t>(parameters.max_candidates)) {
+    const std::size_t excess =
+        result.candidates.size() - static_cast<std::size_t>(parameters.max_candidates);
+    result.candidates.resize(static_cast<std::size_t>(parameters.max_candidates));
+    result.dropped_clusters += static_cast<int>(excess);
+    result.note += std::to_string(excess) + " smallest split part(s) dropped (max_candidates " +
+                   std::to_string(parameters.max_candidates) + "); ";
+  }
+  if (result.candidates.empty()) {
+    result.note += std::string("no cluster of at least ") +
+                   std::to_string(parameters.min_cluster_points) + " points" +
+                   (result.planes.empty() ? " in the cloud (no support plane found)"
+                                          : " stands on the support plane(s)");
+  }
+  return result;
+}
+
+}  // namespace vdc
