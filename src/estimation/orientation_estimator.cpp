@@ -198,7 +198,8 @@ void OrientationEstimator::setParameters(EstimatorParameters parameters) {
 
 ViewUpdate OrientationEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
                                         const Eigen::Isometry3d& world_from_camera,
-                                        std::optional<double> time) {
+                                        std::optional<double> time,
+                                        pcl::PointCloud<pcl::PointXYZ>::ConstPtr verification_scene) {
   if (!world_from_camera.matrix().allFinite()) {
     throw Error("the camera pose given to the orientation estimator is not finite");
   }
@@ -300,8 +301,9 @@ ViewUpdate OrientationEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cl
   const Clock::time_point fused = Clock::now();
   result.timing.fusion = millisecondsBetween(measured, fused);
   if (refiner_) {
-    refineAfterFusion(object.points, verificationScene(cloud, object, segmentation),
-                      world_from_camera, measurement, line_of_sight, &result);
+    if (!verification_scene) verification_scene = verificationScene(cloud, object, segmentation);
+    refineAfterFusion(object.points, std::move(verification_scene), world_from_camera,
+                      measurement, line_of_sight, &result);
   }
   const Clock::time_point refined = Clock::now();
   result.timing.refinement = millisecondsBetween(fused, refined);
@@ -338,6 +340,7 @@ void OrientationEstimator::refineAfterFusion(const pcl::PointCloud<pcl::PointXYZ
   refined_position_ = refinement.kept.front().world_from_object.translation();
   refined_position_covariance_ = refinement.kept.front().position_covariance;
   result->refined_poses = static_cast<int>(refinement.kept.size());
+  result->verified_score = refinement.kept.front().score.score();
 }
 
 void OrientationEstimator::checkBeliefOnView(const RefinementView& view,

@@ -1,5 +1,6 @@
 #include "view_direction_classification/estimation/verification_scene.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace vdc {
@@ -21,6 +22,22 @@ pcl::PointCloud<pcl::PointXYZ>::ConstPtr verificationScene(
     scene->push_back(p);
   }
   if (scene->size() <= object.points.size()) return nullptr;
+  return scene;
+}
+
+pcl::PointCloud<pcl::PointXYZ>::ConstPtr verificationScene(
+    const pcl::PointCloud<pcl::PointXYZ>& cloud, const std::vector<Eigen::Vector4d>& supports,
+    double plane_distance) {
+  auto scene = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  scene->reserve(cloud.size());
+  for (const auto& p : cloud.points) {
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) continue;
+    const Eigen::Vector3d x = p.getVector3fMap().cast<double>();
+    const bool on_a_support = std::any_of(supports.begin(), supports.end(), [&](const auto& n) {
+      return std::abs(n.template head<3>().dot(x) + n[3]) <= plane_distance;
+    });
+    if (!on_a_support) scene->push_back(p);
+  }
   return scene;
 }
 

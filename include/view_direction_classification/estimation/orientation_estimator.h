@@ -144,6 +144,10 @@ struct ViewUpdate {
   // With refinement: the verified poses fused after this view (0: none verified, or skipped,
   // refinement_skip_reason then says why when the input was bad).
   int refined_poses = 0;
+  // The best fused pose's verification score on this view (refined_poses > 0), in [-1, 1]: how
+  // well the model explains the object's points and the scene around them. The scene layer
+  // compares it between models to identify an object.
+  std::optional<double> verified_score;
   std::string refinement_skip_reason;
   // The belief's best pose fitted this view poorly, so a search beyond its hypotheses ran
   // (belief_check.h); rebuild_reason non-empty: the search's pose fitted the latest views clearly
@@ -171,9 +175,13 @@ class OrientationEstimator {
   // line of sight to the object, tempered by its separation from the fused views, moved into the
   // fixed frame and fused. Never throws for cloud content: empty, NaN or too small clouds are
   // skipped with a reason. Throws vdc::Error for a non-finite pose.
+  // verification_scene: what else the camera saw (camera frame), when `cloud` is already the
+  // object (segmentation `none`, e.g. one candidate of a scene): refinement verifies against it
+  // (RefinementView::scene). Null: the scene segmentation leaves (verificationScene).
   ViewUpdate update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
                     const Eigen::Isometry3d& world_from_camera,
-                    std::optional<double> time = std::nullopt);
+                    std::optional<double> time = std::nullopt,
+                    pcl::PointCloud<pcl::PointXYZ>::ConstPtr verification_scene = nullptr);
   // Back to the uniform prior (forgets the fused views, the position and the track too).
   void reset();
   // New settings for the frames to come (a live reconfigure): checked as the constructor checks

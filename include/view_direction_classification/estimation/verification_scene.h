@@ -3,6 +3,10 @@
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 
+#include <Eigen/Core>
+
+#include <vector>
+
 #include "view_direction_classification/estimation/object_segmentation.h"
 
 namespace vdc {
@@ -17,5 +21,11 @@ namespace vdc {
 pcl::PointCloud<pcl::PointXYZ>::ConstPtr verificationScene(
     const pcl::PointCloud<pcl::PointXYZ>& cloud, const ObjectSegment& object,
     const SegmentationParameters& segmentation);
+
+// The same for a whole scene with several support planes (n . x + d = 0, unit n towards the
+// camera): every finite point farther than plane_distance from each of them.
+pcl::PointCloud<pcl::PointXYZ>::ConstPtr verificationScene(
+    const pcl::PointCloud<pcl::PointXYZ>& cloud, const std::vector<Eigen::Vector4d>& supports,
+    double plane_distance);
 
 }  // namespace vdc

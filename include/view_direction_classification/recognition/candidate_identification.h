@@ -1,0 +1,62 @@
+#pragma once
+
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
+#include <Eigen/Geometry>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "view_direction_classification/estimation/orientation_estimator.h"
+#include "view_direction_classification/recognition/model_library.h"
+
+namespace vdc {
+
+struct IdentificationParameters {
+  // A candidate fits a model when its size does (ModelLibrary::fitting).
+  double extent_tolerance = 0.15;
+  // Each fitting model's best verified pose on the view scores s_m in [-1, 1] (none verified:
+  // not a candidate model). "Unknown" scores unknown_score, refinement's acceptance: a model
+  // that explains the candidate barely as well as that is as likely as no model. The
+  // probabilities are a softmax of the scores over `temperature`: 0.05 makes a 0.05 better
+  // score e times as likely.
+  double unknown_score = 0.8;
+  double temperature = 0.05;
+  // The candidate is the most probable model when its probability reaches this, else unknown.
+  double min_probability = 0.5;
+};
+
+// Throws vdc::Error naming the first bad parameter.
+void checkIdentificationParameters(const IdentificationParameters& parameters);
+
+// Softmax of the models' scores (nullopt: no verified pose, probability 0) and unknown_score;
+// the last entry is "unknown". Sums to 1.
+std::vector<double> identityProbabilities(const std::vector<std::optional<double>>& scores,
+                                          const IdentificationParameters& parameters);
+
+// What one candidate is.
+struct Identification {
+  std::vector<double> probabilities;          // per library model, "unknown" last
+  std::vector<std::optional<double>> scores;  // per library model (nullopt: not fitting or none)
+  int model = -1;                             // the identified model, -1: unknown
+  double probability = 0.0;                   // of `model` (of unknown when -1)
+  // The identified model's estimator, which has fused this view (null when unknown).
+  std::unique_ptr<OrientationEstimator> estimator;
+  ViewUpdate update;   // that estimator's update
+  std::string reason;  // why the candidate is unknown (empty when identified)
+};
+
+// Identifies one candidate: a fresh estimator of each model whose size fits (instance settings,
+// segmentation `none`) fuses and refines the candidate's points, verified against `scene`
+// (occluders explain hidden parts, free space contradicts); the verified scores give the
+// probabilities. points and scene in the camera frame.
+Identification identifyCandidate(
+    const ModelLibrary& library, const EstimatorParameters& instance_parameters,
+    const pcl::PointCloud<pcl::PointXYZ>& points, const Eigen::Vector3d& candidate_sides,
+    pcl::PointCloud<pcl::PointXYZ>::ConstPtr scene, const Eigen::Isometry3d& world_from_camera,
+    std::optional<double> time, const IdentificationParameters& parameters);
+
+}  // namespace vdc

@@ -1,0 +1,31 @@
+#pragma once
+
+#include <Eigen/Geometry>
+
+#include <memory>
+#include <vector>
+
+#include "view_direction_classification/refinement/nearest_points.h"
+#include "view_direction_classification/training/model_bundle.h"
+
+namespace vdc {
+
+// How much of a candidate a known instance's pose already explains. Segmentation splits an
+// object where its surface is concave (a mug's handle from its body: section 13); the piece is
+// no object of its own but part of an instance, and identifying it alone would place a second
+// model behind the first, where the whole-scene verification cannot see it is wrong.
+class InstanceExplanation {
+ public:
+  // Indexes the model's surface set (object frame).
+  explicit InstanceExplanation(const ModelBundle& model);
+
+  // The fraction of `points_world` (fixed frame) within `tolerance` [m] of the model's surface
+  // placed at world_from_object. 0 for no points.
+  double explainedFraction(const std::vector<Eigen::Vector3f>& points_world,
+                           const Eigen::Isometry3d& world_from_object, double tolerance) const;
+
+ private:
+  std::unique_ptr<const NearestPoints> surface_;
+};
+
+}  // namespace vdc

@@ -1,0 +1,148 @@
+#pragma once
+
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
+#include <Eigen/Geometry>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "view_direction_classification/estimation/orientation_estimator.h"
+#include "view_direction_classification/recognition/candidate_identification.h"
+#include "view_direction_classification/recognition/instance_explanation.h"
+#include "view_direction_classification/recognition/model_library.h"
+#include "view_direction_classification/scene/scene_segmentation.h"
+
+namespace vdc {
+
+struct SceneEstimatorParameters {
+  SceneSegmentationParameters segmentation;
+  // Each instance's estimator. Its segmentation is `none` (the candidate is the object); its
+  // refinement verifies against the whole scene.
+  EstimatorParameters instance;
+  IdentificationParameters identification;
+  // [m] A candidate whose centroid (fixed frame) is this close to where an instance was last
+  // seen is that instance.
+  double association_distance = 0.05;
+  // Candidates identified per frame at most (the largest first): identification runs an
+  // estimator per fitting model, the frame's main cost.
+  int max_identifications = 10;
+  // A candidate found unknown is tried again only once the camera sees it from a direction at
+  // least this far [rad] from where it was tried (an object no model explains from one side is
+  // not re-identified on every frame).
+  double unknown_retry_angle = 0.5;
+  // A frame is segmented only when the camera moved at least this far [m] or turned this much
+  // [rad] since the last segmented frame: a still camera shows nothing new, and a frame that is
+  // not segmented costs next to nothing.
+  double min_camera_translation = 0.02;
+  double min_camera_rotation = 0.05;
+  // A candidate of which at least min_explained_fraction of the points lie within part_tolerance
+  // [m] of a known instance's surface (at its MAP orientation and position) is a part of that
+  // instance that segmentation cut off (a mug's handle), not an object of its own.
+  double part_tolerance = 0.01;
+  double min_explained_fraction = 0.7;
+};
+
+// Throws vdc::Error naming the first bad parameter.
+void checkSceneEstimatorParameters(const SceneEstimatorParameters& parameters);
+
+// One known object in the scene: a model and its own estimator (belief, refinement, trust).
+struct ObjectInstance {
+  int id = 0;        // stable for the instance's life, unique in the scene
+  int model = -1;    // index into the library
+  std::string name;  // "<model name>_<n>", n counting each model's instances from 1
+  std::unique_ptr<OrientationEstimator> estimator;
+  std::vector<double> identity;  // probabilities per model, "unknown" last, at identification
+  double identity_probability = 0.0;
+  Eigen::Vector3d centroid_world = Eigen::Vector3d::Zero();  // of its points when last seen
+  std::optional<double> last_seen;                           // that frame's time
+  int frames_seen = 0;
+};
+
+// What became of one candidate of a frame.
+struct CandidateOutcome {
+  Eigen::Vector3d centroid_world = Eigen::Vector3d::Zero();
+  Eigen::Vector3d sides = Eigen::Vector3d::Zero();
+  int points = 0;
+  int instance = -1;  // the instance's id (-1: unknown, or not tried)
+  bool new_instance = false;
+  double probability = 0.0;  // of the instance's model at this identification (0 if associated)
+  std::string note;          // why it is unknown or was not tried
+  ViewUpdate update;         // its instance's estimator update (when it has one)
+};
+
+struct SceneUpdate {
+  bool segmented = false;
+  std::string skip_reason;  // why the frame was not segmented
+  int planes = 0;
+  std::vector<CandidateOutcome> candidates;
+  double segmentation_ms = 0, total_ms = 0;
+};
+
+// The scene layer (doc/method.md section 13): every frame's candidates are found, each is
+// associated with a known instance or identified against the library, and each instance's own
+// estimator fuses its view. Instances out of view keep their beliefs.
+class SceneEstimator {
+ public:
+  // Throws vdc::Error for invalid parameters (its own, the segmentation's, an instance's).
+  SceneEstimator(ModelLibrary library, SceneEstimatorParameters parameters);
+
+  // cloud: camera frame, organised or not, NaN allowed; world_from_camera: the camera's pose in
+  // the fixed frame; time [s]. Never throws for cloud content; throws vdc::Error for a
+  // non-finite pose.
+  SceneUpdate update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
+                     const Eigen::Isometry3d& world_from_camera,
+                     std::optional<double> time = std::nullopt);
+
+  const std::vector<ObjectInstance>& instances() const { return instances_; }
+  const ObjectInstance* instance(int id) const;
+  const ModelLibrary& library() const { return library_; }
+  // Forgets every instance (and every unknown object).
+  void reset();
+  // Forgets one instance; false if there is none with that id.
+  bool resetInstance(int id);
+
+ private:
+  struct UnknownObject {
+    Eigen::Vector3d centroid_world;
+    Eigen::Vector3d camera_position;  // where it was last tried from
+  };
+  // One candidate of the frame being processed.
+  struct FrameCandidate {
+    pcl::PointCloud<pcl::PointXYZ> points;  // camera frame
+    std::vector<Eigen::Vector3f> points_world;
+    int instance = -1;  // index into instances_ once assigned
+  };
+  bool cameraMoved(const Eigen::Isometry3d& world_from_camera) const;
+  std::vector<FrameCandidate> frameCandidates(const pcl::PointCloud<pcl::PointXYZ>& cloud,
+                                              const SceneSegments& segments,
+                                              const Eigen::Isometry3d& world_from_camera,
+                                              SceneUpdate* result) const;
+  // The index of the instance whose pose explains the candidate (a part of it), or -1.
+  int explainingInstance(const FrameCandidate& candidate) const;
+  // Each instance fuses the union of its candidates' points.
+  void updateAssignedInstances(std::vector<FrameCandidate>& candidates,
+                               pcl::PointCloud<pcl::PointXYZ>::ConstPtr scene,
+                               const Eigen::Isometry3d& world_from_camera,
+                               std::optional<double> time, SceneUpdate* result);
+  void identify(const pcl::PointCloud<pcl::PointXYZ>& points,
+                pcl::PointCloud<pcl::PointXYZ>::ConstPtr scene,
+                const Eigen::Isometry3d& world_from_camera, std::optional<double> time,
+                CandidateOutcome* outcome);
+  bool retriedTooSoon(const CandidateOutcome& outcome,
+                      const Eigen::Isometry3d& world_from_camera) const;
+
+  ModelLibrary library_;
+  SceneEstimatorParameters parameters_;
+  std::vector<std::unique_ptr<InstanceExplanation>> explanations_;  // per library model
+  std::vector<ObjectInstance> instances_;
+  std::vector<UnknownObject> unknowns_;
+  std::vector<int> instances_named_;  // per model: instances named so far
+  int next_id_ = 1;
+  std::optional<Eigen::Isometry3d> last_segmented_camera_;
+};
+
+}  // namespace vdc

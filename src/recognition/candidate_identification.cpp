@@ -1,0 +1,83 @@
+#include "view_direction_classification/recognition/candidate_identification.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "view_direction_classification/common/error.h"
+
+namespace vdc {
+
+void checkIdentificationParameters(const IdentificationParameters& p) {
+  if (!(p.extent_tolerance >= 0.0 && p.extent_tolerance < 1.0)) {
+    throw Error("identification extent_tolerance must be in [0, 1), got " +
+                std::to_string(p.extent_tolerance));
+  }
+  if (!(p.unknown_score >= -1.0 && p.unknown_score <= 1.0)) {
+    throw Error("identification unknown_score must be in [-1, 1], got " +
+                std::to_string(p.unknown_score));
+  }
+  if (!(p.temperature > 0.0) || !std::isfinite(p.temperature)) {
+    throw Error("identification temperature must be a finite number > 0, got " +
+                std::to_string(p.temperature));
+  }
+  if (!(p.min_probability >= 0.0 && p.min_probability <= 1.0)) {
+    throw Error("identification min_probability must be in [0, 1], got " +
+                std::to_string(p.min_probability));
+  }
+}
+
+std::vector<double> identityProbabilities(const std::vector<std::optional<double>>& scores,
+                                          const IdentificationParameters& parameters) {
+  std::vector<double> result(scores.size() + 1, 0.0);
+  double best = parameters.unknown_score;
+  for (const auto& score : scores) {
+    if (score) best = std::max(best, *score);
+  }
+  // Shifted by the best score, so that no exponential overflows.
+  double total = 0.0;
+  for (std::size_t i = 0; i <= scores.size(); ++i) {
+    const std::optional<double> score =
+        i < scores.size() ? scores[i] : std::optional<double>(parameters.unknown_score);
+    if (!score) continue;
+    result[i] = std::exp((*score - best) / parameters.temperature);
+    total += result[i];
+  }
+  for (double& probability : result) probability /= total;
+  return result;
+}
+
+Identification identifyCandidate(
+    const ModelLibrary& library, const EstimatorParameters& instance_parameters,
+    const pcl::PointCloud<pcl::PointXYZ>& points, const Eigen::Vector3d& candidate_sides,
+    pcl::PointCloud<pcl::PointXYZ>::ConstPtr scene, const Eigen::Isometry3d& world_from_camera,
+    std::optional<double> time, const IdentificationParameters& parameters) {
+  Identification result;
+  result.scores.assign(library.size(), std::nullopt);
+  std::vector<std::unique_ptr<OrientationEstimator>> estimators(library.size());
+  std::vector<ViewUpdate> updates(library.size());
+  const std::vector<int> fitting = library.fitting(candidate_sides, parameters.extent_tolerance);
+  for (int m : fitting) {
+    estimators[m] =
+        std::make_unique<OrientationEstimator>(library.models()[m].bundle, instance_parameters);
+    updates[m] = estimators[m]->update(points, world_from_camera, time, scene);
+    result.scores[m] = updates[m].verified_score;
+  }
+  result.probabilities = identityProbabilities(result.scores, parameters);
+  const auto best = std::max_element(result.probabilities.begin(), result.probabilities.end());
+  const int index = static_cast<int>(best - result.probabilities.begin());
+  result.probability = *best;
+  if (fitting.empty()) {
+    result.reason = "no model of the library fits its size";
+  } else if (index == library.size()) {
+    result.reason = "no model explains it better than unknown";
+  } else if (*best < parameters.min_probability) {
+    result.reason = "no model is probable enough";
+  } else {
+    result.model = index;
+    result.estimator = std::move(estimators[index]);
+    result.update = updates[index];
+  }
+  return result;
+}
+
+}  // namespace vdc

@@ -1,0 +1,280 @@
+#include "view_direction_classification/recognition/scene_estimator.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <string>
+#include <utility>
+
+#include "view_direction_classification/common/error.h"
+#include "view_direction_classification/common/quaternion.h"
+#include "view_direction_classification/estimation/verification_scene.h"
+#include "view_direction_classification/recognition/instance_association.h"
+
+namespace vdc {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double millisecondsSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+void checkNonNegative(double value, const char* name) {
+  if (!(value >= 0.0) || !std::isfinite(value)) {
+    throw Error(std::string("scene estimator ") + name + " must be a finite number >= 0, got " +
+                std::to_string(value));
+  }
+}
+
+pcl::PointCloud<pcl::PointXYZ> candidatePoints(const pcl::PointCloud<pcl::PointXYZ>& cloud,
+                                               const SceneCandidate& candidate) {
+  pcl::PointCloud<pcl::PointXYZ> points;
+  points.reserve(candidate.indices.size());
+  for (int index : candidate.indices) points.push_back(cloud[index]);
+  return points;
+}
+
+}  // namespace
+
+void checkSceneEstimatorParameters(const SceneEstimatorParameters& p) {
+  checkSceneSegmentationParameters(p.segmentation);
+  checkIdentificationParameters(p.identification);
+  checkNonNegative(p.association_distance, "association_distance");
+  checkNonNegative(p.unknown_retry_angle, "unknown_retry_angle");
+  checkNonNegative(p.min_camera_translation, "min_camera_translation");
+  checkNonNegative(p.min_camera_rotation, "min_camera_rotation");
+  checkNonNegative(p.part_tolerance, "part_tolerance");
+  if (!(p.min_explained_fraction >= 0.0 && p.min_explained_fraction <= 1.0)) {
+    throw Error("scene estimator min_explained_fraction must be in [0, 1], got " +
+                std::to_string(p.min_explained_fraction));
+  }
+  if (p.max_identifications < 0) {
+    throw Error("scene estimator max_identifications must be >= 0, got " +
+                std::to_string(p.max_identifications));
+  }
+}
+
+SceneEstimator::SceneEstimator(ModelLibrary library, SceneEstimatorParameters parameters)
+    : library_(std::move(library)), parameters_(std::move(parameters)) {
+  checkSceneEstimatorParameters(parameters_);
+  // The candidate is the object: the instance estimators segment nothing.
+  parameters_.instance.segmentation.mode = SegmentationMode::kNone;
+  for (const LibraryModel& model : library_.models()) {
+    OrientationEstimator check(model.bundle, parameters_.instance);  // throws for bad settings
+  }
+  instances_named_.assign(library_.size(), 0);
+  for (const LibraryModel& model : library_.models()) {
+    explanations_.push_back(std::make_unique<InstanceExplanation>(*model.bundle));
+  }
+}
+
+const ObjectInstance* SceneEstimator::instance(int id) const {
+  for (const ObjectInstance& instance : instances_) {
+    if (instance.id == id) return &instance;
+  }
+  return nullptr;
+}
+
+void SceneEstimator::reset() {
+  instances_.clear();
+  unknowns_.clear();
+  last_segmented_camera_.reset();
+}
+
+bool SceneEstimator::resetInstance(int id) {
+  const auto it = std::find_if(instances_.begin(), instances_.end(),
+                               [id](const ObjectInstance& instance) { return instance.id == id; });
+  if (it == instances_.end()) return false;
+  instances_.erase(it);
+  return true;
+}
+
+bool SceneEstimator::cameraMoved(const Eigen::Isometry3d& world_from_camera) const {
+  if (!last_segmented_camera_) return true;
+  const double translation =
+      (world_from_camera.translation() - last_segmented_camera_->translation()).norm();
+  const Eigen::AngleAxisd turn(last_segmented_camera_->linear().transpose() *
+                               world_from_camera.linear());
+  return translation >= parameters_.min_camera_translation ||
+         std::abs(turn.angle()) >= parameters_.min_camera_rotation;
+}
+
+SceneUpdate SceneEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
+                                   const Eigen::Isometry3d& world_from_camera,
+                                   std::optional<double> time) {
+  if (!world_from_camera.matrix().allFinite()) {
+    throw Error("the camera pose given to the scene estimator is not finite");
+  }
+  const Clock::time_point start = Clock::now();
+  SceneUpdate result;
+  if (!cameraMoved(world_from_camera)) {
+    result.skip_reason = "the camera has not moved since the last segmented frame";
+    result.total_ms = millisecondsSince(start);
+    return result;
+  }
+  const SceneSegments segments = segmentScene(cloud, parameters_.segmentation);
+  result.segmentation_ms = millisecondsSince(start);
+  result.segmented = true;
+  result.planes = static_cast<int>(segments.planes.size());
+  last_segmented_camera_ = world_from_camera;
+  std::vector<Eigen::Vector4d> supports;
+  for (const SupportPlane& plane : segments.planes) supports.push_back(plane.coefficients);
+  const auto scene = verificationScene(cloud, supports, parameters_.segmentation.plane_distance);
+
+  std::vector<FrameCandidate> candidates =
+      frameCandidates(cloud, segments, world_from_camera, &result);
+  std::vector<Eigen::Vector3d> centroids, instance_centroids;
+  for (const CandidateOutcome& outcome : result.candidates)
+    centroids.push_back(outcome.centroid_world);
+  for (const ObjectInstance& instance : instances_) {
+    instance_centroids.push_back(instance.centroid_world);
+  }
+  const std::vector<int> instance_of =
+      associateCandidates(centroids, instance_centroids, parameters_.association_distance);
+  for (std::size_t c = 0; c < candidates.size(); ++c) {
+    candidates[c].instance =
+        instance_of[c] >= 0 ? instance_of[c] : explainingInstance(candidates[c]);
+  }
+  updateAssignedInstances(candidates, scene, world_from_camera, time, &result);
+  // The rest, largest first (segmentScene's order): new instances, parts of the instances found
+  // on this frame, or unknown.
+  int identifications = 0;
+  for (std::size_t c = 0; c < candidates.size(); ++c) {
+    if (candidates[c].instance >= 0) continue;
+    CandidateOutcome& outcome = result.candidates[c];
+    const int part_of = explainingInstance(candidates[c]);
+    if (part_of >= 0) {
+      outcome.instance = instances_[part_of].id;
+      outcome.note = "a part of " + instances_[part_of].name;
+    } else if (retriedTooSoon(outcome, world_from_camera)) {
+      outcome.note = "unknown from a nearby direction already";
+    } else if (identifications >= parameters_.max_identifications) {
+      outcome.note = "not identified: max_identifications reached on this frame";
+    } else {
+      ++identifications;
+      identify(candidates[c].points, scene, world_from_camera, time, &outcome);
+    }
+  }
+  result.total_ms = millisecondsSince(start);
+  return result;
+}
+
+std::vector<SceneEstimator::FrameCandidate> SceneEstimator::frameCandidates(
+    const pcl::PointCloud<pcl::PointXYZ>& cloud, const SceneSegments& segments,
+    const Eigen::Isometry3d& world_from_camera, SceneUpdate* result) const {
+  std::vector<FrameCandidate> candidates;
+  const Eigen::Isometry3f world_from_camera_f = world_from_camera.cast<float>();
+  for (const SceneCandidate& candidate : segments.candidates) {
+    FrameCandidate frame_candidate;
+    frame_candidate.points = candidatePoints(cloud, candidate);
+    for (const auto& p : frame_candidate.points) {
+      frame_candidate.points_world.push_back(world_from_camera_f * p.getVector3fMap());
+    }
+    candidates.push_back(std::move(frame_candidate));
+    CandidateOutcome outcome;
+    outcome.centroid_world = world_from_camera * candidate.centroid;
+    outcome.sides = candidate.extent;
+    outcome.points = candidate.pointCount();
+    result->candidates.push_back(outcome);
+  }
+  return candidates;
+}
+
+int SceneEstimator::explainingInstance(const FrameCandidate& candidate) const {
+  for (std::size_t i = 0; i < instances_.size(); ++i) {
+    const ObjectInstance& instance = instances_[i];
+    const auto position = instance.estimator->positionEstimate();
+    if (!position) continue;
+    Eigen::Isometry3d world_from_object = Eigen::Isometry3d::Identity();
+    world_from_object.linear() = quaternionToRotationMatrix(instance.estimator->mapOrientation());
+    world_from_object.translation() = *position;
+    if (explanations_[instance.model]->explainedFraction(candidate.points_world, world_from_object,
+                                                         parameters_.part_tolerance) >=
+        parameters_.min_explained_fraction) {
+      return static_cast<int>(i);
+    }
+  }
+  return -1;
+}
+
+void SceneEstimator::updateAssignedInstances(std::vector<FrameCandidate>& candidates,
+                                             pcl::PointCloud<pcl::PointXYZ>::ConstPtr scene,
+                                             const Eigen::Isometry3d& world_from_camera,
+                                             std::optional<double> time, SceneUpdate* result) {
+  for (std::size_t i = 0; i < instances_.size(); ++i) {
+    ObjectInstance& instance = instances_[i];
+    pcl::PointCloud<pcl::PointXYZ> points;
+    int first = -1;  // its largest candidate: where its update is reported
+    for (std::size_t c = 0; c < candidates.size(); ++c) {
+      if (candidates[c].instance != static_cast<int>(i)) continue;
+      points += candidates[c].points;
+      result->candidates[c].instance = instance.id;
+      if (first >= 0) result->candidates[c].note = "a part of " + instance.name;
+      if (first < 0) first = static_cast<int>(c);
+    }
+    if (first < 0) continue;
+    result->candidates[first].update =
+        instance.estimator->update(points, world_from_camera, time, scene);
+    instance.centroid_world = result->candidates[first].centroid_world;
+    instance.last_seen = time;
+    ++instance.frames_seen;
+  }
+}
+
+bool SceneEstimator::retriedTooSoon(const CandidateOutcome& outcome,
+                                    const Eigen::Isometry3d& world_from_camera) const {
+  for (const UnknownObject& unknown : unknowns_) {
+    if ((unknown.centroid_world - outcome.centroid_world).norm() >=
+        parameters_.association_distance) {
+      continue;
+    }
+    const Eigen::Vector3d then = (unknown.camera_position - unknown.centroid_world).normalized();
+    const Eigen::Vector3d now =
+        (world_from_camera.translation() - outcome.centroid_world).normalized();
+    if (std::acos(std::clamp(then.dot(now), -1.0, 1.0)) < parameters_.unknown_retry_angle) {
+      return true;
+    }
+  }
+  return false;
+}
+
+void SceneEstimator::identify(const pcl::PointCloud<pcl::PointXYZ>& points,
+                              pcl::PointCloud<pcl::PointXYZ>::ConstPtr scene,
+                              const Eigen::Isometry3d& world_from_camera,
+                              std::optional<double> time, CandidateOutcome* outcome) {
+  Identification identification =
+      identifyCandidate(library_, parameters_.instance, points, outcome->sides, std::move(scene),
+                        world_from_camera, time, parameters_.identification);
+  outcome->probability = identification.probability;
+  if (identification.model < 0) {
+    outcome->note = identification.reason;
+    // Forget an older try of the same object: this one is from the newer direction.
+    unknowns_.erase(
+        std::remove_if(unknowns_.begin(), unknowns_.end(),
+                       [&](const UnknownObject& unknown) {
+                         return (unknown.centroid_world - outcome->centroid_world).norm() <
+                                parameters_.association_distance;
+                       }),
+        unknowns_.end());
+    unknowns_.push_back({outcome->centroid_world, world_from_camera.translation()});
+    return;
+  }
+  ObjectInstance instance;
+  instance.id = next_id_++;
+  instance.model = identification.model;
+  instance.name = library_.models()[instance.model].name + "_" +
+                  std::to_string(++instances_named_[instance.model]);
+  instance.estimator = std::move(identification.estimator);
+  instance.identity = identification.probabilities;
+  instance.identity_probability = identification.probability;
+  instance.centroid_world = outcome->centroid_world;
+  instance.last_seen = time;
+  instance.frames_seen = 1;
+  outcome->instance = instance.id;
+  outcome->new_instance = true;
+  outcome->update = identification.update;
+  instances_.push_back(std::move(instance));
+}
+
+}  // namespace vdc

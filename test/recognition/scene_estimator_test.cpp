@@ -1,0 +1,190 @@
+// The scene layer on rendered table scenes: two mugs (two instances of one model), a box of a
+// mug's size (fits the model's size, is no mug) and a tall cylinder, seen by a moving camera.
+#include "view_direction_classification/recognition/scene_estimator.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "support/mug_scene.h"
+#include "support/quick_mug_model.h"
+#include "view_direction_classification/common/error.h"
+#include "view_direction_classification/common/quaternion.h"
+#include "view_direction_classification/common/rotation_error.h"
+#include "view_direction_classification/geometry/depth_renderer.h"
+
+namespace vdc {
+namespace {
+
+using test::kMugPosition;
+using test::placed;
+
+const Eigen::Isometry3d kFirstMug = placed(kMugPosition, 0.7);
+const Eigen::Isometry3d kSecondMug = placed(kMugPosition + Eigen::Vector3d(0.0, 0.2, 0.0), -1.2);
+// A 9 x 8 x 10 cm box standing on the table: its size fits the mug's, its shape does not.
+const Eigen::Vector3d kBoxCentre = kMugPosition + Eigen::Vector3d(0.05, -0.2, 0.0);
+
+Scene tableScene() {
+  Scene scene;
+  scene.object = {makeMug(), kFirstMug};
+  scene.table_size = Eigen::Vector2d(1.4, 1.0);
+  const double z = test::tableTop();
+  scene.distractors.push_back({makeMug(), kSecondMug});
+  scene.distractors.push_back({makeBoxMesh(Eigen::Vector3d(0.09, 0.08, 0.10)),
+                               placed(Eigen::Vector3d(kBoxCentre.x(), kBoxCentre.y(), z), 0.4)});
+  scene.distractors.push_back(
+      {makeCylinderMesh(0.03, 0.25), placed(Eigen::Vector3d(0.15, -0.05, z))});
+  return scene;
+}
+
+// The camera 0.7 m from the first mug, looking at it from `direction` (fixed frame).
+Eigen::Isometry3d worldFromCamera(const Eigen::Vector3d& direction) {
+  return test::cameraFromWorld(direction.normalized(), 0.7).inverse();
+}
+
+pcl::PointCloud<pcl::PointXYZ> render(const Eigen::Isometry3d& world_from_camera,
+                                      std::uint32_t seed) {
+  static const DepthRenderer renderer(sceneMesh(tableScene()));
+  std::mt19937 rng(seed);
+  return renderer.render(world_from_camera.inverse(), DepthNoiseModel{true}, &rng);
+}
+
+SceneEstimator makeEstimator() {
+  return SceneEstimator(ModelLibrary({{"mug", test::quickMugModel()}}), {});
+}
+
+// The instance whose position estimate is within 2 cm of `truth`, or null.
+const ObjectInstance* instanceAt(const SceneEstimator& estimator, const Eigen::Vector3d& truth) {
+  for (const ObjectInstance& instance : estimator.instances()) {
+    const auto position = instance.estimator->positionEstimate();
+    if (position && (*position - truth).norm() < 0.02) return &instance;
+  }
+  return nullptr;
+}
+
+std::string describe(const SceneEstimator& estimator, const SceneUpdate& update) {
+  std::string text = std::to_string(update.candidates.size()) + " candidates:";
+  for (const CandidateOutcome& c : update.candidates) {
+    text += "\n  at (" + std::to_string(c.centroid_world.x()) + ", " +
+            std::to_string(c.centroid_world.y()) + ") " + std::to_string(c.points) +
+            " points, instance " + std::to_string(c.instance) + " p " +
+            std::to_string(c.probability) + " " + c.note;
+  }
+  for (const ObjectInstance& instance : estimator.instances()) {
+    const auto position = instance.estimator->positionEstimate();
+    text += "\n  " + instance.name + " at (" + std::to_string(position->x()) + ", " +
+            std::to_string(position->y()) + ", " + std::to_string(position->z()) + ")";
+  }
+  return text;
+}
+
+const Eigen::Vector3d kFirstView(1.0, 0.2, 0.9);
+
+TEST(SceneEstimator, FindsTwoMugsAsTwoInstancesAndLeavesTheBoxAndTheCylinderAlone) {
+  SceneEstimator estimator = makeEstimator();
+  const SceneUpdate update =
+      estimator.update(render(worldFromCamera(kFirstView), 1), worldFromCamera(kFirstView), 0.0);
+  ASSERT_TRUE(update.segmented);
+  EXPECT_EQ(update.planes, 1);
+  ASSERT_EQ(estimator.instances().size(), 2u) << describe(estimator, update);
+  const ObjectInstance* first = instanceAt(estimator, kFirstMug.translation());
+  const ObjectInstance* second = instanceAt(estimator, kSecondMug.translation());
+  ASSERT_NE(first, nullptr) << describe(estimator, update);
+  ASSERT_NE(second, nullptr) << describe(estimator, update);
+  EXPECT_NE(first->id, second->id);
+  EXPECT_EQ((std::set<std::string>{first->name, second->name}),
+            (std::set<std::string>{"mug_1", "mug_2"}));
+  EXPECT_GT(first->identity_probability, 0.5);
+  // The box fits the mug's size and was tried: no mug explains it.
+  bool box_tried = false;
+  for (const CandidateOutcome& candidate : update.candidates) {
+    if ((candidate.centroid_world.head<2>() - kBoxCentre.head<2>()).norm() > 0.05) continue;
+    box_tried = true;
+    EXPECT_EQ(candidate.instance, -1) << describe(estimator, update);
+    EXPECT_FALSE(candidate.note.empty());
+  }
+  EXPECT_TRUE(box_tried) << describe(estimator, update);
+  // Segmentation cuts a mug's handle off its body where they meet concavely: the handle is a
+  // part of its mug's instance, not a third mug placed behind the first.
+  int parts = 0;
+  for (const CandidateOutcome& candidate : update.candidates) {
+    if (candidate.note.rfind("a part of mug_", 0) == 0) ++parts;
+  }
+  EXPECT_GE(parts, 1) << describe(estimator, update);
+}
+
+TEST(SceneEstimator, InstancesKeepTheirIdsAndFuseTheirViewsAsTheCameraMoves) {
+  SceneEstimator estimator = makeEstimator();
+  const std::vector<Eigen::Vector3d> directions{kFirstView, {0.6, 0.8, 0.9}, {-0.2, 1.0, 0.8}};
+  std::set<int> ids;
+  for (std::size_t v = 0; v < directions.size(); ++v) {
+    const Eigen::Isometry3d pose = worldFromCamera(directions[v]);
+    const SceneUpdate update = estimator.update(render(pose, 10 + v), pose, 1.0 * v);
+    ASSERT_TRUE(update.segmented);
+    if (v == 0) {
+      for (const ObjectInstance& instance : estimator.instances()) ids.insert(instance.id);
+    }
+    std::set<int> now;
+    for (const ObjectInstance& instance : estimator.instances()) now.insert(instance.id);
+    EXPECT_EQ(now, ids) << "view " << v + 1 << ": " << describe(estimator, update);
+  }
+  ASSERT_EQ(ids.size(), 2u);
+  for (const Eigen::Isometry3d& truth : {kFirstMug, kSecondMug}) {
+    const ObjectInstance* instance = instanceAt(estimator, truth.translation());
+    ASSERT_NE(instance, nullptr);
+    EXPECT_GE(instance->estimator->viewsFused(), 2) << instance->name;
+    EXPECT_LT(rotationErrorDeg(instance->estimator->mapOrientation(),
+                               quaternionFromRotationMatrix(truth.linear())),
+              5.0)
+        << instance->name;
+  }
+}
+
+TEST(SceneEstimator, AStillCameraIsNotSegmentedAgainAndAnInstanceOutOfViewKeepsItsBelief) {
+  SceneEstimator estimator = makeEstimator();
+  const Eigen::Isometry3d pose = worldFromCamera(kFirstView);
+  estimator.update(render(pose, 1), pose, 0.0);
+  const SceneUpdate still = estimator.update(render(pose, 2), pose, 0.1);
+  EXPECT_FALSE(still.segmented);
+  EXPECT_FALSE(still.skip_reason.empty());
+
+  // The camera turned away to an empty part of the table: nothing seen, both kept.
+  const Eigen::Isometry3d away =
+      test::cameraFromWorld(Eigen::Vector3d(1.0, 0.0, 0.9).normalized(), 0.7,
+                            kMugPosition + Eigen::Vector3d(0.0, -0.6, 0.0))
+          .inverse();
+  const ObjectInstance* first = instanceAt(estimator, kFirstMug.translation());
+  ASSERT_NE(first, nullptr);
+  const int id = first->id;
+  const Eigen::Vector4d map = first->estimator->mapOrientation();
+  const SceneUpdate elsewhere = estimator.update(render(away, 3), away, 0.2);
+  EXPECT_TRUE(elsewhere.segmented);
+  ASSERT_NE(estimator.instance(id), nullptr);
+  EXPECT_EQ(estimator.instance(id)->estimator->mapOrientation(), map);
+  EXPECT_EQ(estimator.instances().size(), 2u);
+
+  EXPECT_TRUE(estimator.resetInstance(id));
+  EXPECT_EQ(estimator.instance(id), nullptr);
+  EXPECT_FALSE(estimator.resetInstance(id));
+  estimator.reset();
+  EXPECT_TRUE(estimator.instances().empty());
+}
+
+TEST(SceneEstimator, BadInputIsSkippedOrRefused) {
+  SceneEstimator estimator = makeEstimator();
+  pcl::PointCloud<pcl::PointXYZ> empty;
+  const SceneUpdate update = estimator.update(empty, worldFromCamera(kFirstView), 0.0);
+  EXPECT_TRUE(update.candidates.empty());
+  Eigen::Isometry3d bad = worldFromCamera(kFirstView);
+  bad.translation().x() = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(estimator.update(empty, bad, 0.0), Error);
+  SceneEstimatorParameters parameters;
+  parameters.association_distance = -1.0;
+  EXPECT_THROW(SceneEstimator(ModelLibrary({{"mug", test::quickMugModel()}}), parameters), Error);
+}
+
+}  // namespace
+}  // namespace vdc
