@@ -2,24 +2,19 @@
 
 #include <pcl/PointIndices.h>
 #include <pcl/search/kdtree.h>
-#include <pcl/segmentation/euclidean_cluster_comparator.h>
-#include <pcl/segmentation/extract_clusters.h>
+#include <pcl/segmentation/comparator.h>
 #include <pcl/segmentation/organized_connected_component_segmentation.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <memory>
-#include <set>
 #include <unordered_map>
 
 #include "support_planes.h"
 
 namespace vdc::scene {
 namespace {
-
-// Label of the points that may join a cluster (the others are 0).
-constexpr std::uint32_t kStandingLabel = 1;
 
 // One point per voxel of this fraction of the clustering tolerance is clustered, the others join
 // their voxel's cluster: at 0.6 m a depth camera's points are ~1 mm apart, so a 1 cm radius
@@ -37,27 +32,82 @@ std::uint64_t voxelKey(const pcl::PointXYZ& p, double voxel) {
   return key;
 }
 
+// Whether two points are one cluster's neighbours: closer than the tolerance at the nearer one's
+// depth. Symmetric, so the clusters do not depend on the order the points are visited in.
+bool neighbours(const pcl::PointXYZ& a, const pcl::PointXYZ& b, const DepthTolerance& tolerance) {
+  const pcl::PointXYZ& nearer = std::abs(a.z) < std::abs(b.z) ? a : b;
+  const double limit = toleranceAt(tolerance, nearer);
+  return (a.getVector3fMap() - b.getVector3fMap()).cast<double>().squaredNorm() < limit * limit;
+}
+
+// Image neighbours of the standing points closer than the depth's tolerance. PCL's
+// EuclideanClusterComparator scales its threshold by z^2 alone, which near the camera falls below
+// the sensor's fixed noise; this one adds the fixed part.
+class StandingComparator : public pcl::Comparator<pcl::PointXYZ> {
+ public:
+  StandingComparator(const std::vector<int>& standing, DepthTolerance tolerance)
+      : standing_(standing), tolerance_(tolerance) {}
+
+  bool compare(int a, int b) const override {
+    if (standing_[static_cast<std::size_t>(a)] == kNotStanding ||
+        standing_[static_cast<std::size_t>(b)] == kNotStanding) {
+      return false;
+    }
+    return neighbours((*input_)[a], (*input_)[b], tolerance_);
+  }
+
+ private:
+  const std::vector<int>& standing_;
+  DepthTolerance tolerance_;
+};
+
+// The connected components of the voxel representatives (neighbours() as edges), a component
+// index per representative. A radius search at the representative's depth finds every neighbour:
+// the nearer of two has the smaller tolerance.
+std::vector<int> representativeComponents(const pcl::PointCloud<pcl::PointXYZ>::Ptr& points,
+                                          const DepthTolerance& tolerance) {
+  pcl::search::KdTree<pcl::PointXYZ> tree;
+  tree.setInputCloud(points);
+  std::vector<int> component(points->size(), -1);
+  std::vector<int> found, frontier;
+  std::vector<float> distances;
+  int components = 0;
+  for (std::size_t seed = 0; seed < points->size(); ++seed) {
+    if (component[seed] >= 0) continue;
+    component[seed] = components;
+    frontier.assign(1, static_cast<int>(seed));
+    while (!frontier.empty()) {
+      const pcl::PointXYZ& p = (*points)[frontier.back()];
+      frontier.pop_back();
+      tree.radiusSearch(p, toleranceAt(tolerance, p), found, distances);
+      for (const int k : found) {
+        if (component[static_cast<std::size_t>(k)] >= 0 || !neighbours(p, (*points)[k], tolerance))
+          continue;
+        component[static_cast<std::size_t>(k)] = components;
+        frontier.push_back(k);
+      }
+    }
+    ++components;
+  }
+  return component;
+}
+
+std::vector<std::vector<int>> largeEnough(std::vector<std::vector<int>> all, int min_points) {
+  std::vector<std::vector<int>> clusters;
+  for (std::vector<int>& cluster : all) {
+    if (cluster.size() >= static_cast<std::size_t>(min_points))
+      clusters.push_back(std::move(cluster));
+  }
+  return clusters;
+}
+
 }  // namespace
 
 std::vector<std::vector<int>> organisedClusters(
     const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud, const std::vector<int>& standing,
-    double tolerance, int min_points) {
-  pcl::PointCloud<pcl::Label>::Ptr labels(new pcl::PointCloud<pcl::Label>);
-  labels->resize(cloud->size());
-  for (std::size_t i = 0; i < cloud->size(); ++i)
-    (*labels)[i].label = standing[i] == kNotStanding ? 0 : kStandingLabel;
-  // PCL 1.13's comparator joins two points only if both labels are IN this "exclude" set (its
-  // compare() returns false for labels missing from it), so the set names the labels to keep.
-  const auto joinable = std::make_shared<std::set<std::uint32_t>>();
-  joinable->insert(kStandingLabel);
-  const auto comparator =
-      std::make_shared<pcl::EuclideanClusterComparator<pcl::PointXYZ, pcl::Label>>();
+    const DepthTolerance& tolerance, int min_points) {
+  const auto comparator = std::make_shared<StandingComparator>(standing, tolerance);
   comparator->setInputCloud(cloud);
-  comparator->setLabels(labels);
-  comparator->setExcludeLabels(joinable);
-  // Not depth dependent: the same tolerance as the unorganised path, so both find the same.
-  comparator->setDistanceThreshold(static_cast<float>(tolerance), false);
-
   pcl::OrganizedConnectedComponentSegmentation<pcl::PointXYZ, pcl::Label> components(comparator);
   components.setInputCloud(cloud);
   pcl::PointCloud<pcl::Label> component_labels;
@@ -75,9 +125,10 @@ std::vector<std::vector<int>> organisedClusters(
 }
 
 std::vector<std::vector<int>> euclideanClusters(const pcl::PointCloud<pcl::PointXYZ>& cloud,
-                                                const std::vector<int>& indices, double tolerance,
-                                                int min_points) {
-  const double voxel = kVoxelFractionOfTolerance * tolerance;
+                                                const std::vector<int>& indices,
+                                                const DepthTolerance& tolerance, int min_points) {
+  // The voxel is a fraction of the smallest tolerance (near the camera), so it holds anywhere.
+  const double voxel = kVoxelFractionOfTolerance * tolerance.near;
   std::unordered_map<std::uint64_t, int> voxel_of_key;  // -> index into representatives
   std::vector<int> voxel_of_point(indices.size());
   pcl::PointCloud<pcl::PointXYZ>::Ptr representatives(new pcl::PointCloud<pcl::PointXYZ>);
@@ -89,33 +140,14 @@ std::vector<std::vector<int>> euclideanClusters(const pcl::PointCloud<pcl::Point
     voxel_of_point[k] = entry->second;
   }
   if (representatives->empty()) return {};
-  pcl::search::KdTree<pcl::PointXYZ>::Ptr tree(new pcl::search::KdTree<pcl::PointXYZ>);
-  tree->setInputCloud(representatives);
-  pcl::EuclideanClusterExtraction<pcl::PointXYZ> clustering;
-  clustering.setClusterTolerance(tolerance);
-  clustering.setMinClusterSize(1);  // the point count is judged at full resolution below
-  clustering.setMaxClusterSize(std::numeric_limits<int>::max());
-  clustering.setSearchMethod(tree);
-  clustering.setInputCloud(representatives);
-  std::vector<pcl::PointIndices> found;
-  clustering.extract(found);
-
-  std::vector<int> cluster_of_voxel(representatives->size(), -1);
-  for (std::size_t c = 0; c < found.size(); ++c) {
-    for (const int v : found[c].indices)
-      cluster_of_voxel[static_cast<std::size_t>(v)] = static_cast<int>(c);
-  }
-  std::vector<std::vector<int>> all(found.size());
+  const std::vector<int> component = representativeComponents(representatives, tolerance);
+  const int components = *std::max_element(component.begin(), component.end()) + 1;
+  std::vector<std::vector<int>> all(static_cast<std::size_t>(components));
   for (std::size_t k = 0; k < indices.size(); ++k) {
-    const int c = cluster_of_voxel[static_cast<std::size_t>(voxel_of_point[k])];
-    if (c >= 0) all[static_cast<std::size_t>(c)].push_back(indices[k]);
+    const int c = component[static_cast<std::size_t>(voxel_of_point[k])];
+    all[static_cast<std::size_t>(c)].push_back(indices[k]);
   }
-  std::vector<std::vector<int>> clusters;
-  for (std::vector<int>& cluster : all) {
-    if (cluster.size() >= static_cast<std::size_t>(min_points))
-      clusters.push_back(std::move(cluster));
-  }
-  return clusters;
+  return largeEnough(std::move(all), min_points);
 }
 
 }  // namespace vdc::scene

@@ -117,9 +117,30 @@ pcl::PointCloud<pcl::PointXYZ>::ConstPtr borrowed(const pcl::PointCloud<pcl::Poi
                                                   [](const pcl::PointCloud<pcl::PointXYZ>*) {});
 }
 
+// The clusters of the points standing on a support (or of all, without one): image neighbours in
+// organised clouds, Euclidean neighbours otherwise, both within the tolerance at their depth.
+std::vector<std::vector<int>> clustersOf(const pcl::PointCloud<pcl::PointXYZ>& cloud,
+                                         const std::vector<int>& finite,
+                                         const std::vector<int>& standing, bool organised,
+                                         const SceneSegmentationParameters& parameters) {
+  const scene::DepthTolerance tolerance{parameters.cluster_tolerance,
+                                        parameters.depth_tolerance_growth};
+  if (organised) {
+    return scene::organisedClusters(borrowed(cloud), standing, tolerance,
+                                    parameters.min_cluster_points);
+  }
+  std::vector<int> objects;
+  for (const int i : finite) {
+    if (standing[static_cast<std::size_t>(i)] != scene::kNotStanding) objects.push_back(i);
+  }
+  return scene::euclideanClusters(cloud, objects, tolerance, parameters.min_cluster_points);
+}
+
 }  // namespace
 
 void checkSceneSegmentationParameters(const SceneSegmentationParameters& p) {
+  require(std::isfinite(p.depth_tolerance_growth) && p.depth_tolerance_growth >= 0,
+          "depth_tolerance_growth", p.depth_tolerance_growth, "0 or more [m per m^2]");
   require(positive(p.plane_distance), "plane_distance", p.plane_distance, "positive [m]");
   require(p.min_plane_points >= 3, "min_plane_points", p.min_plane_points, "at least 3");
   require(std::isfinite(p.min_plane_width) && p.min_plane_width >= 0, "min_plane_width",
@@ -167,18 +188,8 @@ SceneSegments segmentScene(const pcl::PointCloud<pcl::PointXYZ>& cloud,
                                      : scene::findRansacSupportPlanes(cloud, finite, parameters);
   }
   const std::vector<int> standing = scene::standingOn(cloud, finite, result.planes, parameters);
-  std::vector<std::vector<int>> clusters;
-  if (result.organised) {
-    clusters = scene::organisedClusters(view, standing, parameters.cluster_tolerance,
-                                        parameters.min_cluster_points);
-  } else {
-    std::vector<int> objects;
-    for (const int i : finite) {
-      if (standing[static_cast<std::size_t>(i)] != scene::kNotStanding) objects.push_back(i);
-    }
-    clusters = scene::euclideanClusters(cloud, objects, parameters.cluster_tolerance,
-                                        parameters.min_cluster_points);
-  }
+  std::vector<std::vector<int>> clusters =
+      clustersOf(cloud, finite, standing, result.organised, parameters);
   capClusters(&clusters, parameters, &result);
   result.candidates = candidatesOf(cloud, clusters, standing, parameters);
   if (result.candidates.size() > static_cast<std::size_t>(parameters.max_candidates)) {

@@ -11,6 +11,8 @@
 #include <cmath>
 #include <limits>
 
+#include "depth_tolerance.h"
+
 namespace vdc::scene {
 namespace {
 
@@ -30,6 +32,13 @@ double degToRad(double degrees) { return degrees * M_PI / 180.0; }
 
 double signedDistance(const Eigen::Vector4d& plane, const pcl::PointXYZ& p) {
   return plane.head<3>().dot(p.getVector3fMap().cast<double>()) + plane(3);
+}
+
+// Within the plane's band, which widens with depth: a far table is noisier and less flat.
+bool onPlane(const Eigen::Vector4d& plane, const pcl::PointXYZ& p,
+             const SceneSegmentationParameters& parameters) {
+  return std::abs(signedDistance(plane, p)) <=
+         toleranceAt({parameters.plane_distance, parameters.depth_tolerance_growth}, p);
 }
 
 // Unit normal, the camera (origin) on the positive side; false for a degenerate plane.
@@ -128,7 +137,9 @@ std::vector<SupportPlane> findOrganisedSupportPlanes(
   pcl::OrganizedMultiPlaneSegmentation<pcl::PointXYZ, pcl::Normal, pcl::Label> planes;
   planes.setMinInliers(static_cast<unsigned>(parameters.min_plane_points));
   planes.setAngularThreshold(degToRad(parameters.plane_angle_deg));
-  planes.setDistanceThreshold(parameters.plane_distance);
+  // PCL scales this threshold by z^2 itself (its plane comparator is depth dependent), so it gets
+  // the tolerance at 1 m.
+  planes.setDistanceThreshold(parameters.plane_distance + parameters.depth_tolerance_growth);
   // A real table's region bends a little (sensor noise, a warped board); PCL's 0.001 default
   // drops Kinect tables.
   planes.setMaximumCurvature(0.01);
@@ -162,12 +173,12 @@ std::vector<SupportPlane> findRansacSupportPlanes(const pcl::PointCloud<pcl::Poi
   for (int round = 0; round < rounds; ++round) {
     if (pool.size() < static_cast<std::size_t>(std::max(parameters.min_plane_points, 3))) break;
     PlaneCandidate candidate;
+    // RANSAC fits with the tolerance near the camera (a tight fit); the inliers are then counted
+    // with the band at their depth.
     if (!ransacPlane(cloud, pool, parameters.plane_distance, &candidate.coefficients)) break;
     std::vector<int> rest;
     for (const int i : pool) {
-      (std::abs(signedDistance(candidate.coefficients, cloud[i])) <= parameters.plane_distance
-           ? candidate.inliers
-           : rest)
+      (onPlane(candidate.coefficients, cloud[i], parameters) ? candidate.inliers : rest)
           .push_back(i);
     }
     if (candidate.inliers.size() < static_cast<std::size_t>(parameters.min_plane_points)) break;
@@ -193,7 +204,7 @@ std::vector<int> standingOn(const pcl::PointCloud<pcl::PointXYZ>& cloud,
     int below = kNotStanding;
     for (std::size_t p = 0; p < planes.size(); ++p) {
       const double height = signedDistance(planes[p].coefficients, cloud[i]);
-      if (std::abs(height) <= parameters.plane_distance) {
+      if (onPlane(planes[p].coefficients, cloud[i], parameters)) {
         below = kNotStanding;
         break;
       }

@@ -1,16 +1,20 @@
 #include "view_direction_classification/scene/scene_segmentation.h"
 
 #include <gtest/gtest.h>
+#include <pcl/common/transforms.h>
 #include <pcl/io/pcd_io.h>
+#include <pcl/kdtree/kdtree_flann.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <iostream>
 #include <limits>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "support/mug_scene.h"
@@ -273,6 +277,8 @@ TEST(SceneSegmentation, InvalidParametersThrowNamingTheFirstBadOne) {
       EXPECT_NE(std::string(error.what()).find(name), std::string::npos) << error.what();
     }
   };
+  expectRejected("depth_tolerance_growth", [](auto& p) { p.depth_tolerance_growth = -0.001; });
+  expectRejected("depth_tolerance_growth", [](auto& p) { p.depth_tolerance_growth = NAN; });
   expectRejected("plane_distance", [](auto& p) { p.plane_distance = -0.01; });
   expectRejected("plane_distance", [](auto& p) { p.plane_distance = NAN; });
   expectRejected("min_plane_points", [](auto& p) { p.min_plane_points = 0; });
@@ -333,29 +339,65 @@ Eigen::Vector3d principalSides(const pcl::PointCloud<pcl::PointXYZ>& cloud) {
   return segments.candidates.empty() ? Eigen::Vector3d::Zero() : segments.candidates[0].extent;
 }
 
-TEST(SceneSegmentation, RealKinectSceneHasSeveralCandidatesOneOfTheCartonsSize) {
-  const std::string scene_path = realSceneDirectory() + "/milk_cartoon_all_small_clorox.pcd";
-  const std::string carton_path = realSceneDirectory() + "/milk.pcd";
-  if (!std::filesystem::exists(scene_path) || !std::filesystem::exists(carton_path)) {
-    GTEST_SKIP() << "PCL's milk scene is not at " << scene_path << " (with milk.pcd): run "
-                 << "scripts/install_deps.sh (it unpacks it from `apt-get download "
-                    "python3-pcl`) or set VDC_REAL_SCENE_DIR";
+// milk.pcd is NOT in the scene's frame as shipped (its points lie up to 13 cm from the scene's):
+// it is the carton cut out of the scene and moved by this rigid transform, the pose PCL's
+// correspondence grouping tutorial finds (R ~ 14 degrees, t ~ (-0.16, 0.21, -0.04) m), refined
+// here once by ICP. Applied, it puts every carton point on a scene point (checked below).
+pcl::PointCloud<pcl::PointXYZ> cartonInSceneFrame(const pcl::PointCloud<pcl::PointXYZ>& carton) {
+  Eigen::Matrix4f scene_from_carton;
+  scene_from_carton << 0.968884f, -0.119713f, 0.216661f, -0.158966f,  //
+      0.116827f, 0.992814f, 0.0261251f, 0.212499f,                    //
+      -0.21823f, 9.8e-7f, 0.975901f, -0.0421221f,                     //
+      0.0f, 0.0f, 0.0f, 1.0f;
+  pcl::PointCloud<pcl::PointXYZ> moved;
+  pcl::transformPointCloud(carton, moved, scene_from_carton);
+  return moved;
+}
+
+// The index of each point's nearest scene point (KdTreeFLANN skips the scene's NaNs and returns
+// indices into the whole organised cloud); *farthest is the largest of those distances [m].
+std::vector<int> nearestSceneIndices(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& scene,
+                                     const pcl::PointCloud<pcl::PointXYZ>& points,
+                                     double* farthest) {
+  pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+  tree.setInputCloud(scene);
+  std::vector<int> nearest(points.size(), -1), found(1);
+  std::vector<float> squared(1);
+  *farthest = 0.0;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    if (tree.nearestKSearch(points[k], 1, found, squared) != 1) continue;
+    nearest[k] = found[0];
+    *farthest = std::max(*farthest, std::sqrt(static_cast<double>(squared[0])));
   }
-  pcl::PointCloud<pcl::PointXYZ> scene, carton;
-  ASSERT_EQ(pcl::io::loadPCDFile(scene_path, scene), 0) << scene_path;
-  ASSERT_EQ(pcl::io::loadPCDFile(carton_path, carton), 0) << carton_path;
-  const Eigen::Vector3d carton_sides = principalSides(carton);
+  return nearest;
+}
+
+// The candidate holding most of the scene points at `indices` (-1: none holds any), and how many.
+std::pair<int, int> candidateHoldingMost(const SceneSegments& segments,
+                                         const std::vector<int>& indices) {
+  std::pair<int, int> best{-1, 0};
+  for (std::size_t c = 0; c < segments.candidates.size(); ++c) {
+    const std::vector<int>& held = segments.candidates[c].indices;  // ascending
+    const auto count = std::count_if(indices.begin(), indices.end(), [&](int i) {
+      return std::binary_search(held.begin(), held.end(), i);
+    });
+    if (count > best.second) best = {static_cast<int>(c), static_cast<int>(count)};
+  }
+  return best;
+}
+
+// segmentScene with the defaults (not tolerances tuned to the scene), its time printed and
+// recorded under `name` (not asserted: machines differ).
+SceneSegments segmentTimed(const pcl::PointCloud<pcl::PointXYZ>& cloud, const std::string& name) {
   const auto start = std::chrono::steady_clock::now();
-  // A Kinect 0.6 to 2 m away: its table deviates from one plane by more than 8 mm (depth
-  // distortion) and its neighbouring points step by up to 1.5 cm in depth.
-  SceneSegmentationParameters kinect;
-  kinect.plane_distance = 0.015;
-  kinect.cluster_tolerance = 0.015;
-  const SceneSegments segments = segmentScene(scene, kinect);
-  std::cout << "segmentScene on the milk scene (" << scene.width << " x " << scene.height
-            << "): " << millisecondsOf(start) << " ms, " << segments.planes.size() << " plane(s), "
-            << segments.candidates.size() << " candidates; the carton's "
-            << "model is " << carton_sides.transpose() << " m\n";
+  const SceneSegments segments = segmentScene(cloud, {});
+  const double milliseconds = millisecondsOf(start);
+  std::string key = "segment_scene_" + name + "_ms";
+  std::replace(key.begin(), key.end(), ' ', '_');
+  ::testing::Test::RecordProperty(key, std::to_string(milliseconds));
+  std::cout << "segmentScene on the " << name << " (" << cloud.width << " x " << cloud.height
+            << ", defaults): " << milliseconds << " ms, " << segments.planes.size() << " plane(s), "
+            << segments.candidates.size() << " candidates\n";
   for (const SupportPlane& plane : segments.planes) {
     std::cout << "  plane " << plane.coefficients.transpose() << " with " << plane.inliers
               << " points\n";
@@ -365,14 +407,79 @@ TEST(SceneSegmentation, RealKinectSceneHasSeveralCandidatesOneOfTheCartonsSize) 
               << ", sides " << candidate.extent.transpose() << ", support " << candidate.support
               << "\n";
   }
+  return segments;
+}
+
+// The candidate holding most of the carton's points holds at least 80 % of them, at most 20 % of
+// its points are others, and its sides are the carton's.
+void expectOneCandidateHoldsTheCarton(const SceneSegments& segments,
+                                      const std::vector<int>& carton_indices,
+                                      const Eigen::Vector3d& carton_sides) {
+  const auto [match, held] = candidateHoldingMost(segments, carton_indices);
+  ASSERT_GE(match, 0) << "no candidate holds a carton point";
+  const SceneCandidate& candidate = segments.candidates[static_cast<std::size_t>(match)];
+  const int others = candidate.pointCount() - held;
+  std::cout << "  the carton's candidate " << match << " holds " << held << " of its "
+            << carton_indices.size() << " points, and " << others << " others\n";
+  EXPECT_GE(held, 0.8 * static_cast<double>(carton_indices.size()));
+  // The others (8-9 %) lie 22-25 cm above the table, over the carton and above most of
+  // milk.pcd's points: most likely the carton's own top, which the tutorial's cut left out. No
+  // neighbour is merged in.
+  EXPECT_LE(others, 0.2 * candidate.pointCount());
+  // The longest side may be a little longer for that top.
+  EXPECT_LT((candidate.extent - carton_sides).cwiseAbs().maxCoeff(), 0.03)
+      << candidate.extent.transpose() << " vs the carton's " << carton_sides.transpose();
+}
+
+// The cloud's finite points, unorganised, and where each of the cloud's points went (-1: NaN).
+pcl::PointCloud<pcl::PointXYZ> finitePoints(const pcl::PointCloud<pcl::PointXYZ>& cloud,
+                                            std::vector<int>* moved_to) {
+  pcl::PointCloud<pcl::PointXYZ> points;
+  moved_to->assign(cloud.size(), -1);
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    if (!std::isfinite(cloud[i].z)) continue;
+    (*moved_to)[i] = static_cast<int>(points.size());
+    points.push_back(cloud[i]);
+  }
+  return points;
+}
+
+TEST(SceneSegmentation, RealKinectSceneWithDefaultsHasTheCartonAsOneCandidate) {
+  const std::string scene_path = realSceneDirectory() + "/milk_cartoon_all_small_clorox.pcd";
+  const std::string carton_path = realSceneDirectory() + "/milk.pcd";
+  if (!std::filesystem::exists(scene_path) || !std::filesystem::exists(carton_path)) {
+    GTEST_SKIP() << "PCL's milk scene is not at " << scene_path << " (with milk.pcd): run "
+                 << "scripts/install_deps.sh (it unpacks it from `apt-get download "
+                    "python3-pcl`) or set VDC_REAL_SCENE_DIR";
+  }
+  pcl::PointCloud<pcl::PointXYZ>::Ptr scene(new pcl::PointCloud<pcl::PointXYZ>);
+  pcl::PointCloud<pcl::PointXYZ> carton;
+  ASSERT_EQ(pcl::io::loadPCDFile(scene_path, *scene), 0) << scene_path;
+  ASSERT_EQ(pcl::io::loadPCDFile(carton_path, carton), 0) << carton_path;
+  double farthest = 0.0;
+  const std::vector<int> carton_indices =
+      nearestSceneIndices(scene, cartonInSceneFrame(carton), &farthest);
+  ASSERT_LT(farthest, 1e-4) << "milk.pcd, moved, is not made of the scene's points";
+  const Eigen::Vector3d carton_sides = principalSides(carton);
+
+  // A Kinect 0.6 to 2 m away: the depth-dependent tolerances must hold the table and the carton.
+  const SceneSegments segments = segmentTimed(*scene, "milk scene");
   ASSERT_TRUE(segments.organised);
   ASSERT_GE(segments.planes.size(), 1u);
   EXPECT_GE(segments.candidates.size(), 3u);
-  int carton_sized = 0;
-  for (const SceneCandidate& candidate : segments.candidates) {
-    carton_sized += (candidate.extent - carton_sides).cwiseAbs().maxCoeff() < 0.02;
-  }
-  EXPECT_GE(carton_sized, 1) << "no candidate has the carton's sides " << carton_sides.transpose();
+  expectOneCandidateHoldsTheCarton(segments, carton_indices, carton_sides);
+
+  // The same points unorganised (RANSAC, Euclidean clusters). RANSAC's second support is a plane
+  // 2.4 degrees off the table through the feet of the near objects (1-5 cm up) and the far
+  // table; its band takes ~1100 of the carton's lowest points, so the candidate holds ~86 % of
+  // the carton here, not ~99 %.
+  std::vector<int> moved_to;
+  const pcl::PointCloud<pcl::PointXYZ> points = finitePoints(*scene, &moved_to);
+  std::vector<int> moved_carton;
+  for (const int i : carton_indices) moved_carton.push_back(moved_to[static_cast<std::size_t>(i)]);
+  const SceneSegments unorganised = segmentTimed(points, "milk scene unorganised");
+  EXPECT_FALSE(unorganised.organised);
+  expectOneCandidateHoldsTheCarton(unorganised, moved_carton, carton_sides);
 }
 
 }  // namespace

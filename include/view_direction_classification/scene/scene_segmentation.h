@@ -12,9 +12,18 @@ namespace vdc {
 
 // How a whole scene's depth cloud is cut into object candidates (segmentScene).
 struct SceneSegmentationParameters {
+  // A structured-light camera's depth noise and disparity steps grow with the square of the
+  // depth z (Kinect: sigma 1.9 mm and steps 2.9 mm at 1 m, 6.1 mm and 1.1 cm at 2 m), and a real
+  // table departs from a plane more where it is far. So plane_distance and cluster_tolerance are
+  // the tolerances near the camera; at depth z [m] each is larger by depth_tolerance_growth * z^2.
+  // 0.003 is a Kinect-class camera's disparity step at 1 m; 0 keeps the tolerances fixed.
+  double depth_tolerance_growth = 0.003;  // [m per m^2]
+
   // Support planes (tables, shelves).
-  double plane_distance = 0.008;  // [m] plane inliers; what stands on a plane starts this far above
-  int min_plane_points = 2000;    // inliers a plane needs to be a support
+  // [m] plane inliers near the camera (grows with depth); what stands on a plane starts this far
+  // above it.
+  double plane_distance = 0.008;
+  int min_plane_points = 2000;  // inliers a plane needs to be a support
   // [m] a support is at least this wide across (its inliers' second principal extent): narrower
   // planes are faces of the objects themselves (a box's top).
   double min_plane_width = 0.25;
@@ -27,7 +36,8 @@ struct SceneSegmentationParameters {
   double max_height_above_plane = 0.5;  // [m] what stands higher is background (walls, people)
 
   // Object clusters.
-  double cluster_tolerance = 0.01;  // [m] neighbours closer than this are one cluster
+  // [m] neighbours closer than this near the camera (grows with depth) are one cluster
+  double cluster_tolerance = 0.01;
   int min_cluster_points = 50;      // smaller clusters (and split parts) are noise, not counted
   int max_cluster_points = 200000;  // larger clusters are dropped (a wall, not an object)
   int max_candidates = 30;          // the largest are kept, the rest counted as dropped
@@ -53,7 +63,7 @@ void checkSceneSegmentationParameters(const SceneSegmentationParameters& paramet
 // towards the camera (the origin of the cloud's frame, so coefficients(3) > 0).
 struct SupportPlane {
   Eigen::Vector4d coefficients = Eigen::Vector4d::Zero();
-  int inliers = 0;  // points of the cloud within plane_distance of it
+  int inliers = 0;  // points of the cloud within plane_distance (at their depth) of it
 };
 
 // One object candidate: the points of one object (or of several that could not be told apart).
