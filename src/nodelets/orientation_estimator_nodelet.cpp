@@ -1,13 +1,13 @@
 #include <pluginlib/class_list_macros.hpp>
 
-#include "../ros/orientation_estimator_ros.h"
+#include "../ros/estimator_shell.h"
 #include "view_direction_classification/ros/shell_nodelet.h"
 
 namespace vdc {
 
 // The orientation_estimator as a nodelet: beside a camera driver in one manager, clouds arrive
 // without serialisation.
-class OrientationEstimatorNodelet : public ShellNodelet<OrientationEstimatorRos> {};
+class OrientationEstimatorNodelet : public ShellNodelet<EstimatorShell> {};
 
 }  // namespace vdc
 

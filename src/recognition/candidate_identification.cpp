@@ -24,6 +24,14 @@ void checkIdentificationParameters(const IdentificationParameters& p) {
     throw Error("identification min_probability must be in [0, 1], got " +
                 std::to_string(p.min_probability));
   }
+  if (!(p.drop_probability >= 0.0 && p.drop_probability <= p.min_probability)) {
+    throw Error("identification drop_probability must be in [0, min_probability], got " +
+                std::to_string(p.drop_probability));
+  }
+  if (!(p.max_view_evidence > 0.0) || !std::isfinite(p.max_view_evidence)) {
+    throw Error("identification max_view_evidence must be a finite number > 0, got " +
+                std::to_string(p.max_view_evidence));
+  }
 }
 
 std::vector<double> identityProbabilities(const std::vector<std::optional<double>>& scores,
@@ -44,6 +52,13 @@ std::vector<double> identityProbabilities(const std::vector<std::optional<double
   }
   for (double& probability : result) probability /= total;
   return result;
+}
+
+double identityEvidence(std::optional<double> verified_score,
+                        const IdentificationParameters& parameters) {
+  const double score = verified_score.value_or(parameters.unknown_score - 0.1);
+  const double evidence = (score - parameters.unknown_score) / parameters.temperature;
+  return std::clamp(evidence, -parameters.max_view_evidence, parameters.max_view_evidence);
 }
 
 Identification identifyCandidate(

@@ -214,11 +214,40 @@ void SceneEstimator::updateAssignedInstances(std::vector<FrameCandidate>& candid
       if (first < 0) first = static_cast<int>(c);
     }
     if (first < 0) continue;
-    result->candidates[first].update =
-        instance.estimator->update(points, world_from_camera, time, scene);
+    const ViewUpdate update = instance.estimator->update(points, world_from_camera, time, scene);
+    result->candidates[first].update = update;
     instance.centroid_world = result->candidates[first].centroid_world;
     instance.last_seen = time;
     ++instance.frames_seen;
+    if (update.outcome == FrameOutcome::kFused) weighIdentity(instance, update, world_from_camera);
+  }
+  dropUnlikelyInstances(result);
+}
+
+void SceneEstimator::weighIdentity(ObjectInstance& instance, const ViewUpdate& update,
+                                   const Eigen::Isometry3d& world_from_camera) {
+  const double p = std::clamp(instance.identity_probability, 1e-9, 1.0 - 1e-9);
+  const double log_odds =
+      std::log(p / (1.0 - p)) + identityEvidence(update.verified_score, parameters_.identification);
+  instance.identity_probability = 1.0 / (1.0 + std::exp(-log_odds));
+  if (instance.identity_probability < parameters_.identification.drop_probability) {
+    // Remembered as unknown from here, so that it is not identified again from the same side.
+    unknowns_.push_back({instance.centroid_world, world_from_camera.translation()});
+  }
+}
+
+void SceneEstimator::dropUnlikelyInstances(SceneUpdate* result) {
+  for (auto it = instances_.begin(); it != instances_.end();) {
+    if (it->identity_probability >= parameters_.identification.drop_probability) {
+      ++it;
+      continue;
+    }
+    for (CandidateOutcome& candidate : result->candidates) {
+      if (candidate.instance != it->id) continue;
+      candidate.dropped = true;
+      candidate.note = it->name + " dropped: the views do not support it";
+    }
+    it = instances_.erase(it);
   }
 }
 

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "scene_ros_parameters.h"
 #include "view_direction_classification/common/error.h"
 
 namespace vdc {
@@ -114,13 +115,15 @@ const ParameterTable<EstimatorRosParameters>& estimatorParameterTable() {
   return table;
 }
 
-EstimatorRosParameters readEstimatorRosParameters(const ros::NodeHandle& node) {
+EstimatorRosParameters readEstimatorRosParameters(const ros::NodeHandle& node, bool with_library) {
   EstimatorRosParameters p;
   const ParameterReader reader(node);
-  estimatorParameterTable().read(reader, p);
-  // diagnostic_updater reads ~diagnostic_period itself.
+  estimatorParameterTable().read(reader, p, with_library);
+  // diagnostic_updater reads ~diagnostic_period itself; the library's settings are the node's
+  // too (one config serves both uses).
   std::vector<std::string> known = estimatorParameterTable().names();
   known.push_back("diagnostic_period");
+  for (const std::string& name : sceneParameterNames()) known.push_back(name);
   reader.warnAboutUnknownParameters(known);
   if (p.object_frame == p.fixed_frame) {
     throw parameterError("object_frame", "different from ~fixed_frame",

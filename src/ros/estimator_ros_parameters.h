@@ -40,6 +40,8 @@ const ParameterTable<EstimatorRosParameters>& estimatorParameterTable();
 // Reads and validates the parameters of `private_node`. Throws vdc::Error naming the parameter
 // (e.g. "Parameter ~tf_timeout must be a finite number >= 0, got -1.") for a missing model, a
 // wrong type, an unknown segmentation mode or an out-of-range value.
-EstimatorRosParameters readEstimatorRosParameters(const ros::NodeHandle& private_node);
+// With a model library (~models set, scene_ros_parameters.h) ~model is not required.
+EstimatorRosParameters readEstimatorRosParameters(const ros::NodeHandle& private_node,
+                                                  bool with_library = false);
 
 }  // namespace vdc

@@ -51,3 +51,19 @@ TEST(IdentificationParameters, AreCheckedNamingTheBadOne) {
 
 }  // namespace
 }  // namespace vdc
+
+namespace vdc {
+namespace {
+
+TEST(IdentityEvidence, AViewThatVerifiesWellSupportsTheModelAndOneThatDoesNotOpposesIt) {
+  const IdentificationParameters parameters;
+  EXPECT_GT(identityEvidence(0.9, parameters), 0.0);
+  EXPECT_LT(identityEvidence(0.7, parameters), 0.0);
+  EXPECT_LT(identityEvidence(std::nullopt, parameters), 0.0);  // nothing verified
+  // Capped: one view never decides alone.
+  EXPECT_EQ(identityEvidence(1.0, parameters), parameters.max_view_evidence);
+  EXPECT_EQ(identityEvidence(-1.0, parameters), -parameters.max_view_evidence);
+}
+
+}  // namespace
+}  // namespace vdc

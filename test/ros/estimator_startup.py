@@ -34,6 +34,23 @@ class EstimatorStartup(unittest.TestCase):
         self.assertEqual(code, 1, output)
         self.assertIn(os.path.basename(corrupt.name), output)
 
+    def test_a_library_entry_that_cannot_be_loaded_stops_the_node_naming_it(self):
+        code, output = run_node(NODE, preset={"models": {"cup": "/nonexistent/cup_model.h5"}})
+        self.assertEqual(code, 1, output)
+        fatal = fatal_lines(output)
+        self.assertEqual(len(fatal), 1, output)
+        self.assertIn("'cup'", fatal[0])
+        self.assertIn("/nonexistent/cup_model.h5", fatal[0])
+
+    def test_a_library_that_is_not_a_map_of_paths_is_refused_naming_the_parameter(self):
+        assert_refused(self, NODE, ["~models", "a non-empty map"], "_models:=mug.h5")
+        assert_refused(self, NODE, ["~models", "a non-empty map"], preset={"models": ["a", "b"]})
+        assert_refused(self, NODE, ["~models", "'cup'"], preset={"models": {"cup": 5}})
+
+    def test_a_bad_library_setting_is_refused_naming_the_parameter(self):
+        assert_refused(self, NODE, ["~association_distance"], "_association_distance:=-1.0",
+                       preset={"models": {"cup": "/nonexistent.h5"}})
+
     def test_invalid_parameter_exits_with_status_1_naming_the_parameter(self):
         code, output = run_node(NODE, "_model:=/nonexistent.h5", "_tf_timeout:=-1.0")
         self.assertEqual(code, 1, output)

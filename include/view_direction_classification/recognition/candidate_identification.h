@@ -27,6 +27,12 @@ struct IdentificationParameters {
   double temperature = 0.05;
   // The candidate is the most probable model when its probability reaches this, else unknown.
   double min_probability = 0.5;
+  // After identification each fused view of an instance adds its evidence (identityEvidence);
+  // an instance whose probability falls below this is dropped: one view can make a box look
+  // like a mug's side, the next ones do not.
+  double drop_probability = 0.2;
+  // [log-odds] The most one view can add or take: no single view decides alone.
+  double max_view_evidence = 3.0;
 };
 
 // Throws vdc::Error naming the first bad parameter.
@@ -36,6 +42,12 @@ void checkIdentificationParameters(const IdentificationParameters& parameters);
 // the last entry is "unknown". Sums to 1.
 std::vector<double> identityProbabilities(const std::vector<std::optional<double>>& scores,
                                           const IdentificationParameters& parameters);
+
+// One fused view's evidence for an instance's model against "unknown", in log-odds: (s -
+// unknown_score) / temperature for the view's best verified score s, capped at
+// +-max_view_evidence; a view on which no pose verified counts as s = unknown_score - 0.1.
+double identityEvidence(std::optional<double> verified_score,
+                        const IdentificationParameters& parameters);
 
 // What one candidate is.
 struct Identification {

@@ -56,6 +56,8 @@ struct ObjectInstance {
   std::string name;  // "<model name>_<n>", n counting each model's instances from 1
   std::unique_ptr<OrientationEstimator> estimator;
   std::vector<double> identity;  // probabilities per model, "unknown" last, at identification
+  // Its model against "unknown": the identification's probability, then each fused view's
+  // evidence added in log-odds (identityEvidence).
   double identity_probability = 0.0;
   Eigen::Vector3d centroid_world = Eigen::Vector3d::Zero();  // of its points when last seen
   std::optional<double> last_seen;                           // that frame's time
@@ -69,6 +71,7 @@ struct CandidateOutcome {
   int points = 0;
   int instance = -1;  // the instance's id (-1: unknown, or not tried)
   bool new_instance = false;
+  bool dropped = false;      // its instance's identity fell below drop_probability: forgotten
   double probability = 0.0;  // of the instance's model at this identification (0 if associated)
   std::string note;          // why it is unknown or was not tried
   ViewUpdate update;         // its instance's estimator update (when it has one)
@@ -99,6 +102,11 @@ class SceneEstimator {
 
   const std::vector<ObjectInstance>& instances() const { return instances_; }
   const ObjectInstance* instance(int id) const;
+  // Whether the views support the instance's model well enough to report it: its identity
+  // probability is at least min_probability (below, it is kept until it recovers or is dropped).
+  bool confirmed(const ObjectInstance& instance) const {
+    return instance.identity_probability >= parameters_.identification.min_probability;
+  }
   const ModelLibrary& library() const { return library_; }
   // Forgets every instance (and every unknown object).
   void reset();
@@ -128,6 +136,11 @@ class SceneEstimator {
                                pcl::PointCloud<pcl::PointXYZ>::ConstPtr scene,
                                const Eigen::Isometry3d& world_from_camera,
                                std::optional<double> time, SceneUpdate* result);
+  // Adds a fused view's evidence to the instance's identity (identityEvidence).
+  void weighIdentity(ObjectInstance& instance, const ViewUpdate& update,
+                     const Eigen::Isometry3d& world_from_camera);
+  // Forgets the instances whose identity fell below drop_probability.
+  void dropUnlikelyInstances(SceneUpdate* result);
   void identify(const pcl::PointCloud<pcl::PointXYZ>& points,
                 pcl::PointCloud<pcl::PointXYZ>::ConstPtr scene,
                 const Eigen::Isometry3d& world_from_camera, std::optional<double> time,

@@ -117,11 +117,12 @@ class ParameterTable {
   }
 
   // Reads every listed parameter that is set into `settings`; the unset ones keep the value
-  // `settings` has (its default). Throws vdc::Error naming the first bad or missing parameter.
-  void read(const ParameterReader& reader, Settings& settings) const {
+  // `settings` has (its default). Throws vdc::Error naming the first bad or missing parameter;
+  // with `waive_required`, a required parameter may be missing (another one replaces it).
+  void read(const ParameterReader& reader, Settings& settings, bool waive_required = false) const {
     for (const Entry& entry : entries_) {
       if (!reader.has(entry.name)) {
-        if (!entry.missing_message.empty()) throw Error(entry.missing_message);
+        if (!entry.missing_message.empty() && !waive_required) throw Error(entry.missing_message);
         continue;
       }
       std::visit(

@@ -1,0 +1,30 @@
+#pragma once
+
+#include <ros/node_handle.h>
+
+#include <memory>
+
+#include "orientation_estimator_ros.h"
+#include "scene_estimator_ros.h"
+
+namespace vdc {
+
+// The orientation_estimator node and nodelet: with ~models (a model library) every known object
+// of the scene (SceneEstimatorRos), else the one object of ~model (OrientationEstimatorRos, its
+// single-object topics). Throws what the chosen class throws at start-up.
+class EstimatorShell {
+ public:
+  EstimatorShell(ros::NodeHandle node, ros::NodeHandle private_node) {
+    if (private_node.hasParam("models")) {
+      scene_ = std::make_unique<SceneEstimatorRos>(node, private_node);
+    } else {
+      single_ = std::make_unique<OrientationEstimatorRos>(node, private_node);
+    }
+  }
+
+ private:
+  std::unique_ptr<OrientationEstimatorRos> single_;
+  std::unique_ptr<SceneEstimatorRos> scene_;
+};
+
+}  // namespace vdc

@@ -1,0 +1,367 @@
+#include "scene_estimator_ros.h"
+
+#include <tf2/exceptions.h>
+#include <view_direction_classification/ObjectInstance.h>
+#include <view_direction_classification/ObjectInstances.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include <boost/make_shared.hpp>
+
+#include <exception>
+#include <sstream>
+#include <utility>
+
+#include "view_direction_classification/common/error.h"
+#include "view_direction_classification/ros/belief_markers.h"
+#include "view_direction_classification/ros/bingham_conversions.h"
+#include "view_direction_classification/ros/cloud_conversions.h"
+#include "view_direction_classification/ros/geometry_conversions.h"
+
+namespace vdc {
+namespace {
+
+using ObjectInstanceMsg = view_direction_classification::ObjectInstance;
+
+ModelLibrary loadLibrary(const SceneRosParameters& parameters) {
+  return ModelLibrary::load(parameters.models);
+}
+
+SceneEstimatorParameters withInstanceSettings(SceneEstimatorParameters scene,
+                                              const EstimatorParameters& instance) {
+  scene.instance = instance;
+  return scene;
+}
+
+// The instance's pose for ~instances, its tf frame and its markers.
+struct InstancePose {
+  Eigen::Vector3d position;
+  Eigen::Vector4d orientation;
+};
+
+std::optional<InstancePose> poseOf(const ObjectInstance& instance) {
+  const auto position = instance.estimator->positionEstimate();
+  if (!position) return std::nullopt;
+  return InstancePose{*position, instance.estimator->mapOrientation()};
+}
+
+// A text label above the instance: its name and identity probability.
+visualization_msgs::Marker labelMarker(const std_msgs::Header& header,
+                                       const ObjectInstance& instance,
+                                       const Eigen::Vector3d& position, double height) {
+  visualization_msgs::Marker label;
+  label.header = header;
+  label.ns = instance.name + "/label";
+  label.type = visualization_msgs::Marker::TEXT_VIEW_FACING;
+  label.pose.position.x = position.x();
+  label.pose.position.y = position.y();
+  label.pose.position.z = position.z() + height;
+  label.pose.orientation.w = 1.0;
+  label.scale.z = 0.03;
+  label.color.r = label.color.g = label.color.b = label.color.a = 1.0f;
+  std::ostringstream text;
+  text.precision(2);
+  text << instance.name << " (" << instance.identity_probability << ")";
+  label.text = text.str();
+  return label;
+}
+
+}  // namespace
+
+SceneEstimatorRos::SceneEstimatorRos(ros::NodeHandle node, ros::NodeHandle private_node)
+    : node_(node),
+      private_node_(private_node),
+      parameters_(readEstimatorRosParameters(private_node, true)),
+      scene_parameters_(readSceneRosParameters(private_node)),
+      estimator_(std::make_unique<SceneEstimator>(
+          loadLibrary(scene_parameters_),
+          withInstanceSettings(scene_parameters_.scene, parameters_.core))),
+      tf_listener_(tf_buffer_, node_),
+      diagnostics_(node_, private_node_, private_node_.getNamespace()) {
+  instances_publisher_ =
+      private_node_.advertise<view_direction_classification::ObjectInstances>("instances", 1);
+  markers_publisher_ = private_node_.advertise<visualization_msgs::MarkerArray>("markers", 1);
+  reset_server_ = private_node_.advertiseService("reset", &SceneEstimatorRos::resetService, this);
+  reset_instance_server_ = private_node_.advertiseService(
+      "reset_instance", &SceneEstimatorRos::resetInstanceService, this);
+  diagnostics_.setHardwareID("none");
+  diagnostics_.add("scene estimate", this, &SceneEstimatorRos::diagnose);
+  diagnostics_timer_ = private_node_.createTimer(
+      ros::Duration(1.0), [this](const ros::TimerEvent&) { diagnostics_.update(); });
+  if (parameters_.publish_tf && parameters_.tf_rate > 0.0) {
+    transforms_timer_ =
+        private_node_.createTimer(ros::Duration(1.0 / parameters_.tf_rate),
+                                  [this](const ros::TimerEvent&) { rebroadcastTransforms(); });
+  }
+  worker_ = std::thread(&SceneEstimatorRos::workerLoop, this);
+  cloud_subscriber_ = node_.subscribe("cloud", 1, &SceneEstimatorRos::cloudCallback, this);
+  std::string names;
+  for (const LibraryModel& model : estimator_->library().models()) {
+    names += (names.empty() ? "" : ", ") + model.name;
+  }
+  ROS_INFO_NAMED(private_node_.getNamespace(),
+                 "%s: a library of %d models (%s), fixed frame '%s', listening on %s",
+                 private_node_.getNamespace().c_str(), estimator_->library().size(), names.c_str(),
+                 parameters_.fixed_frame.c_str(), cloud_subscriber_.getTopic().c_str());
+}
+
+SceneEstimatorRos::~SceneEstimatorRos() {
+  transforms_timer_.stop();
+  cloud_subscriber_.shutdown();
+  {
+    std::lock_guard<std::mutex> lock(pending_mutex_);
+    stopping_ = true;
+  }
+  pending_changed_.notify_all();
+  if (worker_.joinable()) worker_.join();
+}
+
+void SceneEstimatorRos::cloudCallback(const sensor_msgs::PointCloud2ConstPtr& cloud) {
+  bool replaced = false;
+  {
+    std::lock_guard<std::mutex> lock(pending_mutex_);
+    replaced = static_cast<bool>(pending_);
+    pending_ = cloud;
+  }
+  pending_changed_.notify_one();
+  std::lock_guard<std::mutex> lock(statistics_mutex_);
+  ++received_;
+  if (replaced) ++dropped_;
+}
+
+void SceneEstimatorRos::workerLoop() {
+  while (true) {
+    sensor_msgs::PointCloud2ConstPtr cloud;
+    {
+      std::unique_lock<std::mutex> lock(pending_mutex_);
+      pending_changed_.wait(lock, [this] { return stopping_ || pending_; });
+      if (stopping_) return;
+      cloud.swap(pending_);
+    }
+    try {
+      processCloud(*cloud);
+    } catch (const std::exception& error) {
+      skip(std::string("processing the cloud failed: ") + error.what());
+    }
+  }
+}
+
+bool SceneEstimatorRos::cameraPose(const sensor_msgs::PointCloud2& cloud,
+                                   Eigen::Isometry3d* world_from_camera) {
+  try {
+    *world_from_camera = toIsometry(
+        tf_buffer_.lookupTransform(parameters_.fixed_frame, cloud.header.frame_id,
+                                   cloud.header.stamp, ros::Duration(parameters_.tf_timeout)));
+    return true;
+  } catch (const tf2::TransformException& error) {
+    std::ostringstream reason;
+    reason << "no transform from the cloud's frame '" << cloud.header.frame_id
+           << "' to the fixed frame '" << parameters_.fixed_frame << "' at " << cloud.header.stamp
+           << " within " << parameters_.tf_timeout << " s (" << error.what() << ")";
+    skip(reason.str());
+  } catch (const Error& error) {
+    skip(error.what());
+  }
+  return false;
+}
+
+void SceneEstimatorRos::processCloud(const sensor_msgs::PointCloud2& cloud) {
+  {
+    std::lock_guard<std::mutex> lock(estimator_mutex_);
+    if (!last_stamp_.isZero() && cloud.header.stamp < last_stamp_) {
+      estimator_->reset();
+      forgetTransforms();
+      ROS_INFO_NAMED(private_node_.getNamespace(),
+                     "%s: every instance forgotten: time went backwards (e.g. a looping bag)",
+                     private_node_.getNamespace().c_str());
+    }
+    last_stamp_ = cloud.header.stamp;
+  }
+  const std::size_t points = std::size_t(cloud.width) * cloud.height;
+  if (points > static_cast<std::size_t>(parameters_.max_points)) {
+    skip("the cloud has " + std::to_string(points) +
+         " points, more than ~max_points = " + std::to_string(parameters_.max_points));
+    return;
+  }
+  Eigen::Isometry3d world_from_camera;
+  if (!cameraPose(cloud, &world_from_camera)) return;
+  pcl::PointCloud<pcl::PointXYZ> xyz;
+  try {
+    xyz = toXyzCloud(cloud);
+  } catch (const Error& error) {
+    skip(error.what());
+    return;
+  }
+  std::lock_guard<std::mutex> lock(estimator_mutex_);
+  const SceneUpdate update = estimator_->update(xyz, world_from_camera, cloud.header.stamp.toSec());
+  std::lock_guard<std::mutex> statistics_lock(statistics_mutex_);
+  last_skip_reason_.clear();
+  if (!update.segmented) {
+    ++still_;
+    return;
+  }
+  ++segmented_;
+  last_candidates_ = static_cast<int>(update.candidates.size());
+  last_unknown_ = 0;
+  for (const CandidateOutcome& candidate : update.candidates) {
+    if (candidate.instance < 0) ++last_unknown_;
+  }
+  instances_ = 0;
+  for (const ObjectInstance& instance : estimator_->instances()) {
+    if (estimator_->confirmed(instance)) ++instances_;
+  }
+  last_segmentation_ms_ = update.segmentation_ms;
+  last_total_ms_ = update.total_ms;
+  publishInstances(cloud.header);
+}
+
+// Called with estimator_mutex_ held.
+void SceneEstimatorRos::publishInstances(const std_msgs::Header& cloud_header) {
+  std_msgs::Header header;
+  header.stamp = cloud_header.stamp;
+  header.frame_id = parameters_.fixed_frame;
+  const auto message = boost::make_shared<view_direction_classification::ObjectInstances>();
+  message->header = header;
+  visualization_msgs::MarkerArray markers = makeClearMarkers(header);
+  std::vector<geometry_msgs::TransformStamped> transforms;
+  for (const ObjectInstance& instance : estimator_->instances()) {
+    const std::optional<InstancePose> pose = poseOf(instance);
+    // An instance the views no longer support well enough is not published (nor its tf frame)
+    // until they do again, or it is dropped.
+    if (!pose || !estimator_->confirmed(instance)) continue;
+    const OrientationEstimator& estimator = *instance.estimator;
+    ObjectInstanceMsg entry;
+    entry.id = static_cast<std::uint32_t>(instance.id);
+    entry.name = instance.name;
+    entry.model = estimator_->library().models()[instance.model].name;
+    entry.identity_probability = instance.identity_probability;
+    entry.pose =
+        toPoseWithCovarianceMsg(pose->position, pose->orientation,
+                                estimator.positionCovariance().value_or(
+                                    parameters_.position_variance * Eigen::Matrix3d::Identity()),
+                                estimator.orientationCovariance());
+    entry.belief = toBinghamMixtureMsg(estimator.belief());
+    entry.belief.header = header;
+    entry.belief.object_id = instance.name;
+    entry.belief.map_orientation = toQuaternionMsg(pose->orientation);
+    entry.belief.entropy = estimator.entropy();
+    entry.views_fused = entry.belief.views_fused =
+        static_cast<std::uint32_t>(estimator.viewsFused());
+    entry.cone90_deg = entry.belief.cone90_deg = estimator.spread().cone90 * 180.0 / M_PI;
+    entry.converged = entry.belief.converged = entry.cone90_deg <= parameters_.converged_cone90_deg;
+    entry.last_seen = instance.last_seen ? ros::Time(*instance.last_seen) : ros::Time();
+    message->instances.push_back(entry);
+
+    const visualization_msgs::MarkerArray axes = makeBeliefMarkers(
+        header, instance.name, pose->position, pose->orientation, {}, parameters_.marker_length);
+    markers.markers.insert(markers.markers.end(), axes.markers.begin(), axes.markers.end());
+    markers.markers.push_back(
+        labelMarker(header, instance, pose->position, parameters_.marker_length));
+    geometry_msgs::TransformStamped transform;
+    transform.header = header;
+    transform.child_frame_id = instance.name;
+    transform.transform.translation.x = pose->position.x();
+    transform.transform.translation.y = pose->position.y();
+    transform.transform.translation.z = pose->position.z();
+    transform.transform.rotation = toQuaternionMsg(pose->orientation);
+    transforms.push_back(transform);
+  }
+  instances_publisher_.publish(message);
+  if (markers_publisher_.getNumSubscribers() > 0) markers_publisher_.publish(markers);
+  if (!parameters_.publish_tf) return;
+  if (!transforms.empty()) tf_broadcaster_.sendTransform(transforms);
+  std::lock_guard<std::mutex> lock(transforms_mutex_);
+  transforms_ = std::move(transforms);
+}
+
+void SceneEstimatorRos::rebroadcastTransforms() {
+  std::vector<geometry_msgs::TransformStamped> transforms;
+  {
+    std::lock_guard<std::mutex> lock(transforms_mutex_);
+    transforms = transforms_;
+  }
+  if (transforms.empty()) return;
+  // The objects are static in the fixed frame: the latest estimates hold now.
+  const ros::Time now = ros::Time::now();
+  for (auto& transform : transforms) transform.header.stamp = now;
+  tf_broadcaster_.sendTransform(transforms);
+}
+
+void SceneEstimatorRos::forgetTransforms() {
+  std::lock_guard<std::mutex> lock(transforms_mutex_);
+  transforms_.clear();
+}
+
+void SceneEstimatorRos::skip(const std::string& reason) {
+  {
+    std::lock_guard<std::mutex> lock(statistics_mutex_);
+    ++skipped_;
+    last_skip_reason_ = reason;
+  }
+  ROS_WARN_THROTTLE_NAMED(2.0, private_node_.getNamespace(), "%s: skipped a cloud: %s",
+                          private_node_.getNamespace().c_str(), reason.c_str());
+}
+
+bool SceneEstimatorRos::resetService(std_srvs::Trigger::Request&,
+                                     std_srvs::Trigger::Response& response) {
+  std::lock_guard<std::mutex> lock(estimator_mutex_);
+  estimator_->reset();
+  forgetTransforms();
+  response.success = true;
+  response.message = "Every instance is forgotten.";
+  return true;
+}
+
+bool SceneEstimatorRos::resetInstanceService(
+    view_direction_classification::ResetInstance::Request& request,
+    view_direction_classification::ResetInstance::Response& response) {
+  std::lock_guard<std::mutex> lock(estimator_mutex_);
+  if (request.id == 0) {
+    estimator_->reset();
+    forgetTransforms();
+    response.success = true;
+    response.message = "Every instance is forgotten.";
+    return true;
+  }
+  const ObjectInstance* instance = estimator_->instance(static_cast<int>(request.id));
+  if (instance == nullptr) {
+    response.success = false;
+    response.message = "No instance has id " + std::to_string(request.id) + ".";
+    return true;
+  }
+  const std::string name = instance->name;
+  estimator_->resetInstance(static_cast<int>(request.id));
+  {
+    std::lock_guard<std::mutex> transforms_lock(transforms_mutex_);
+    transforms_.erase(std::remove_if(transforms_.begin(), transforms_.end(),
+                                     [&](const auto& t) { return t.child_frame_id == name; }),
+                      transforms_.end());
+  }
+  response.success = true;
+  response.message = name + " is forgotten.";
+  return true;
+}
+
+void SceneEstimatorRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
+  std::lock_guard<std::mutex> lock(statistics_mutex_);
+  if (!last_skip_reason_.empty()) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
+                   "The last cloud was skipped: " + last_skip_reason_);
+  } else if (segmented_ == 0) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "Waiting for clouds.");
+  } else {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "Following the scene's objects.");
+  }
+  status.add("clouds received", received_);
+  status.add("clouds segmented", segmented_);
+  status.add("clouds not segmented (the camera did not move)", still_);
+  status.add("clouds dropped (a newer one arrived first)", dropped_);
+  status.add("clouds skipped (bad input or no tf)", skipped_);
+  status.add("instances (confirmed)", instances_);
+  status.add("last candidates", last_candidates_);
+  status.add("last candidates unknown or not tried", last_unknown_);
+  status.add("last skip reason", last_skip_reason_.empty() ? "none" : last_skip_reason_);
+  status.add("last segmentation [ms]", last_segmentation_ms_);
+  status.add("last frame [ms]", last_total_ms_);
+}
+
+}  // namespace vdc

@@ -1,0 +1,95 @@
+#pragma once
+
+#include <diagnostic_updater/diagnostic_updater.h>
+#include <geometry_msgs/TransformStamped.h>
+#include <ros/ros.h>
+#include <sensor_msgs/PointCloud2.h>
+#include <std_srvs/Trigger.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_broadcaster.h>
+#include <tf2_ros/transform_listener.h>
+#include <view_direction_classification/ResetInstance.h>
+
+#include <condition_variable>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "estimator_ros_parameters.h"
+#include "scene_ros_parameters.h"
+#include "view_direction_classification/recognition/scene_estimator.h"
+
+namespace vdc {
+
+// The orientation_estimator with a model library (~models; doc/nodes.md, "Several objects"):
+// every known object of the scene. Each cloud (camera pose from tf2) goes to the core's
+// SceneEstimator, which segments it, identifies the candidates against the library and keeps one
+// estimator per instance; this class publishes ~instances, one tf frame per instance
+// (fixed_frame -> "<model>_<n>", re-sent at ~tf_rate), ~markers with labels, serves ~reset and
+// ~reset_instance and reports diagnostics. As in OrientationEstimatorRos, the callback keeps only
+// the newest cloud and one worker thread processes it; nothing a message contains ends the node.
+class SceneEstimatorRos {
+ public:
+  // Throws vdc::Error (or another std::exception) for invalid parameters or a library entry that
+  // cannot be loaded (naming it): the caller reports it as a fatal start-up error.
+  SceneEstimatorRos(ros::NodeHandle node, ros::NodeHandle private_node);
+  ~SceneEstimatorRos();
+
+  SceneEstimatorRos(const SceneEstimatorRos&) = delete;
+  SceneEstimatorRos& operator=(const SceneEstimatorRos&) = delete;
+
+ private:
+  void cloudCallback(const sensor_msgs::PointCloud2ConstPtr& cloud);
+  void workerLoop();
+  void processCloud(const sensor_msgs::PointCloud2& cloud);
+  bool cameraPose(const sensor_msgs::PointCloud2& cloud, Eigen::Isometry3d* world_from_camera);
+  void publishInstances(const std_msgs::Header& cloud_header);
+  void rebroadcastTransforms();
+  void skip(const std::string& reason);
+  bool resetService(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
+  bool resetInstanceService(view_direction_classification::ResetInstance::Request& request,
+                            view_direction_classification::ResetInstance::Response& response);
+  void forgetTransforms();
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
+
+  ros::NodeHandle node_, private_node_;
+  EstimatorRosParameters parameters_;
+  SceneRosParameters scene_parameters_;
+
+  std::mutex estimator_mutex_;  // guards estimator_ and last_stamp_
+  std::unique_ptr<SceneEstimator> estimator_;
+  ros::Time last_stamp_;
+
+  tf2_ros::Buffer tf_buffer_;
+  tf2_ros::TransformListener tf_listener_;
+  tf2_ros::TransformBroadcaster tf_broadcaster_;
+  // The instances' latest transforms, re-sent with the current time at ~tf_rate (/tf is not
+  // latched). The worker writes them, the timer reads them.
+  std::mutex transforms_mutex_;
+  std::vector<geometry_msgs::TransformStamped> transforms_;
+  ros::Timer transforms_timer_;
+  ros::Publisher instances_publisher_, markers_publisher_;
+  ros::ServiceServer reset_server_, reset_instance_server_;
+  ros::Subscriber cloud_subscriber_;
+  diagnostic_updater::Updater diagnostics_;
+  ros::Timer diagnostics_timer_;
+
+  // Newest unprocessed cloud (the hand-over between callback and worker).
+  std::mutex pending_mutex_;
+  std::condition_variable pending_changed_;
+  sensor_msgs::PointCloud2ConstPtr pending_;
+  bool stopping_ = false;
+  std::thread worker_;
+
+  // Statistics for the diagnostics, guarded by statistics_mutex_.
+  std::mutex statistics_mutex_;
+  std::uint64_t received_ = 0, segmented_ = 0, still_ = 0, dropped_ = 0, skipped_ = 0;
+  int last_candidates_ = 0, last_unknown_ = 0, instances_ = 0;
+  std::string last_skip_reason_;
+  double last_segmentation_ms_ = 0, last_total_ms_ = 0;
+};
+
+}  // namespace vdc
