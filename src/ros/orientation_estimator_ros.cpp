@@ -64,7 +64,9 @@ OrientationEstimatorRos::OrientationEstimatorRos(ros::NodeHandle node, ros::Node
   }
 
   startReconfigureServer();
-  worker_ = std::thread(&OrientationEstimatorRos::workerLoop, this);
+  worker_ = std::make_unique<NewestCloudWorker>(
+      [this](const sensor_msgs::PointCloud2& cloud) { processCloud(cloud); },
+      [this](const std::string& reason) { skip(reason); });
   // Queue of one: the worker only ever wants the newest cloud.
   cloud_subscriber_ = node_.subscribe("cloud", 1, &OrientationEstimatorRos::cloudCallback, this);
   ROS_INFO_NAMED(
@@ -79,44 +81,14 @@ OrientationEstimatorRos::~OrientationEstimatorRos() {
   reconfigure_server_.reset();
   object_transform_timer_.stop();
   cloud_subscriber_.shutdown();
-  {
-    std::lock_guard<std::mutex> lock(pending_mutex_);
-    stopping_ = true;
-  }
-  pending_changed_.notify_all();
-  if (worker_.joinable()) worker_.join();
+  worker_.reset();  // after the subscription: no cloud is offered to a stopped worker
 }
 
 void OrientationEstimatorRos::cloudCallback(const sensor_msgs::PointCloud2ConstPtr& cloud) {
-  bool replaced = false;
-  {
-    std::lock_guard<std::mutex> lock(pending_mutex_);
-    replaced = static_cast<bool>(pending_);
-    pending_ = cloud;
-  }
-  pending_changed_.notify_one();
+  const bool replaced = worker_->offer(cloud);
   std::lock_guard<std::mutex> lock(statistics_mutex_);
   ++received_;
   if (replaced) ++dropped_;
-}
-
-void OrientationEstimatorRos::workerLoop() {
-  while (true) {
-    sensor_msgs::PointCloud2ConstPtr cloud;
-    {
-      std::unique_lock<std::mutex> lock(pending_mutex_);
-      pending_changed_.wait(lock, [this] { return stopping_ || pending_; });
-      if (stopping_) return;
-      cloud.swap(pending_);
-    }
-    try {
-      processCloud(*cloud);
-    } catch (const std::exception& error) {
-      // Anything the core did not foresee (e.g. memory for a gigantic cloud) costs one cloud,
-      // not the node.
-      skip(std::string("processing the cloud failed: ") + error.what());
-    }
-  }
 }
 
 void OrientationEstimatorRos::processCloud(const sensor_msgs::PointCloud2& cloud) {

@@ -10,15 +10,14 @@
 #include <tf2_ros/transform_broadcaster.h>
 #include <tf2_ros/transform_listener.h>
 
-#include <condition_variable>
 #include <cstdint>
 #include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
-#include <thread>
 
 #include "estimator_ros_parameters.h"
+#include "newest_cloud_worker.h"
 #include "view_direction_classification/OrientationEstimatorConfig.h"
 #include "view_direction_classification/estimation/orientation_estimator.h"
 
@@ -60,7 +59,6 @@ class OrientationEstimatorRos {
 
  private:
   void cloudCallback(const sensor_msgs::PointCloud2ConstPtr& cloud);
-  void workerLoop();
   void processCloud(const sensor_msgs::PointCloud2& cloud);
   void publishEstimate(const std_msgs::Header& cloud_header);
   void rebroadcastObjectTransform();
@@ -102,12 +100,8 @@ class OrientationEstimatorRos {
   boost::recursive_mutex reconfigure_mutex_;
   std::unique_ptr<dynamic_reconfigure::Server<OrientationEstimatorConfig>> reconfigure_server_;
 
-  // Newest unprocessed cloud (the hand-over between callback and worker).
-  std::mutex pending_mutex_;
-  std::condition_variable pending_changed_;
-  sensor_msgs::PointCloud2ConstPtr pending_;
-  bool stopping_ = false;
-  std::thread worker_;
+  // The newest unprocessed cloud's hand-over to the worker thread that processes it.
+  std::unique_ptr<NewestCloudWorker> worker_;
 
   // Statistics for the diagnostics, guarded by statistics_mutex_.
   std::mutex statistics_mutex_;

@@ -92,7 +92,9 @@ SceneEstimatorRos::SceneEstimatorRos(ros::NodeHandle node, ros::NodeHandle priva
         private_node_.createTimer(ros::Duration(1.0 / parameters_.tf_rate),
                                   [this](const ros::TimerEvent&) { rebroadcastTransforms(); });
   }
-  worker_ = std::thread(&SceneEstimatorRos::workerLoop, this);
+  worker_ = std::make_unique<NewestCloudWorker>(
+      [this](const sensor_msgs::PointCloud2& cloud) { processCloud(cloud); },
+      [this](const std::string& reason) { skip(reason); });
   cloud_subscriber_ = node_.subscribe("cloud", 1, &SceneEstimatorRos::cloudCallback, this);
   std::string names;
   for (const LibraryModel& model : estimator_->library().models()) {
@@ -107,42 +109,14 @@ SceneEstimatorRos::SceneEstimatorRos(ros::NodeHandle node, ros::NodeHandle priva
 SceneEstimatorRos::~SceneEstimatorRos() {
   transforms_timer_.stop();
   cloud_subscriber_.shutdown();
-  {
-    std::lock_guard<std::mutex> lock(pending_mutex_);
-    stopping_ = true;
-  }
-  pending_changed_.notify_all();
-  if (worker_.joinable()) worker_.join();
+  worker_.reset();  // after the subscription: no cloud is offered to a stopped worker
 }
 
 void SceneEstimatorRos::cloudCallback(const sensor_msgs::PointCloud2ConstPtr& cloud) {
-  bool replaced = false;
-  {
-    std::lock_guard<std::mutex> lock(pending_mutex_);
-    replaced = static_cast<bool>(pending_);
-    pending_ = cloud;
-  }
-  pending_changed_.notify_one();
+  const bool replaced = worker_->offer(cloud);
   std::lock_guard<std::mutex> lock(statistics_mutex_);
   ++received_;
   if (replaced) ++dropped_;
-}
-
-void SceneEstimatorRos::workerLoop() {
-  while (true) {
-    sensor_msgs::PointCloud2ConstPtr cloud;
-    {
-      std::unique_lock<std::mutex> lock(pending_mutex_);
-      pending_changed_.wait(lock, [this] { return stopping_ || pending_; });
-      if (stopping_) return;
-      cloud.swap(pending_);
-    }
-    try {
-      processCloud(*cloud);
-    } catch (const std::exception& error) {
-      skip(std::string("processing the cloud failed: ") + error.what());
-    }
-  }
 }
 
 bool SceneEstimatorRos::cameraPose(const sensor_msgs::PointCloud2& cloud,

@@ -10,15 +10,14 @@
 #include <tf2_ros/transform_listener.h>
 #include <view_direction_classification/ResetInstance.h>
 
-#include <condition_variable>
 #include <cstdint>
 #include <memory>
 #include <mutex>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "estimator_ros_parameters.h"
+#include "newest_cloud_worker.h"
 #include "scene_ros_parameters.h"
 #include "view_direction_classification/recognition/scene_estimator.h"
 
@@ -43,7 +42,6 @@ class SceneEstimatorRos {
 
  private:
   void cloudCallback(const sensor_msgs::PointCloud2ConstPtr& cloud);
-  void workerLoop();
   void processCloud(const sensor_msgs::PointCloud2& cloud);
   bool cameraPose(const sensor_msgs::PointCloud2& cloud, Eigen::Isometry3d* world_from_camera);
   void publishInstances(const std_msgs::Header& cloud_header);
@@ -77,12 +75,8 @@ class SceneEstimatorRos {
   diagnostic_updater::Updater diagnostics_;
   ros::Timer diagnostics_timer_;
 
-  // Newest unprocessed cloud (the hand-over between callback and worker).
-  std::mutex pending_mutex_;
-  std::condition_variable pending_changed_;
-  sensor_msgs::PointCloud2ConstPtr pending_;
-  bool stopping_ = false;
-  std::thread worker_;
+  // The newest unprocessed cloud's hand-over to the worker thread that processes it.
+  std::unique_ptr<NewestCloudWorker> worker_;
 
   // Statistics for the diagnostics, guarded by statistics_mutex_.
   std::mutex statistics_mutex_;
