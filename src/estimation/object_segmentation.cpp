@@ -171,6 +171,8 @@ ObjectSegment segmentObject(const pcl::PointCloud<pcl::PointXYZ>& cloud,
       object = tabletopObject(measuredPointsWithin(cloud, Eigen::Vector3d::Zero(), 0.0), parameters,
                               context);
       break;
+    case SegmentationMode::kScene:
+      throw Error("segmentation 'scene' is the scene layer's (SceneEstimator), not one object's");
   }
   if (object.failure.empty() &&
       touchesImageBorder(cloud, object.indices, parameters.border_margin)) {
@@ -183,7 +185,9 @@ SegmentationMode parseSegmentationMode(const std::string& name) {
   if (name == "none") return SegmentationMode::kNone;
   if (name == "region_of_interest") return SegmentationMode::kRegionOfInterest;
   if (name == "tabletop") return SegmentationMode::kTabletop;
-  throw Error("unknown segmentation '" + name + "'; expected none, region_of_interest or tabletop");
+  if (name == "scene") return SegmentationMode::kScene;
+  throw Error("unknown segmentation '" + name +
+              "'; expected none, region_of_interest, tabletop or scene");
 }
 
 std::string segmentationModeName(SegmentationMode mode) {
@@ -194,6 +198,8 @@ std::string segmentationModeName(SegmentationMode mode) {
       return "region_of_interest";
     case SegmentationMode::kTabletop:
       return "tabletop";
+    case SegmentationMode::kScene:
+      return "scene";
   }
   return "unknown";
 }

@@ -1,5 +1,6 @@
 #include "scene_estimator_ros.h"
 
+#include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <tf2/exceptions.h>
 #include <view_direction_classification/ObjectInstance.h>
 #include <view_direction_classification/ObjectInstances.h>
@@ -70,8 +71,9 @@ visualization_msgs::Marker labelMarker(const std_msgs::Header& header,
 SceneEstimatorRos::SceneEstimatorRos(ros::NodeHandle node, ros::NodeHandle private_node)
     : node_(node),
       private_node_(private_node),
-      parameters_(readEstimatorRosParameters(private_node, true)),
-      scene_parameters_(readSceneRosParameters(private_node)),
+      parameters_(readEstimatorRosParameters(private_node, private_node.hasParam("models"))),
+      scene_parameters_(readSceneRosParameters(private_node, parameters_)),
+      single_object_topics_(!private_node.hasParam("models")),
       estimator_(std::make_unique<SceneEstimator>(
           loadLibrary(scene_parameters_),
           withInstanceSettings(scene_parameters_.scene, parameters_.core))),
@@ -80,6 +82,10 @@ SceneEstimatorRos::SceneEstimatorRos(ros::NodeHandle node, ros::NodeHandle priva
   instances_publisher_ =
       private_node_.advertise<view_direction_classification::ObjectInstances>("instances", 1);
   markers_publisher_ = private_node_.advertise<visualization_msgs::MarkerArray>("markers", 1);
+  if (single_object_topics_) {
+    estimate_publisher_ = private_node_.advertise<BinghamMixtureMsg>("estimate", 1);
+    pose_publisher_ = private_node_.advertise<geometry_msgs::PoseWithCovarianceStamped>("pose", 1);
+  }
   reset_server_ = private_node_.advertiseService("reset", &SceneEstimatorRos::resetService, this);
   reset_instance_server_ = private_node_.advertiseService(
       "reset_instance", &SceneEstimatorRos::resetInstanceService, this);
@@ -240,11 +246,39 @@ void SceneEstimatorRos::publishInstances(const std_msgs::Header& cloud_header) {
     transforms.push_back(transform);
   }
   instances_publisher_.publish(message);
+  if (single_object_topics_) publishPrimary(*message, &transforms);
   if (markers_publisher_.getNumSubscribers() > 0) markers_publisher_.publish(markers);
   if (!parameters_.publish_tf) return;
   if (!transforms.empty()) tf_broadcaster_.sendTransform(transforms);
   std::lock_guard<std::mutex> lock(transforms_mutex_);
   transforms_ = std::move(transforms);
+}
+
+// A library of one keeps the single-object topics: ~estimate, ~pose and object_frame follow the
+// instance seen in the most views (the lowest id among equals), so a user of one object sees
+// what the one-object pipeline published.
+void SceneEstimatorRos::publishPrimary(const view_direction_classification::ObjectInstances& all,
+                                       std::vector<geometry_msgs::TransformStamped>* transforms) {
+  const ObjectInstanceMsg* primary = nullptr;
+  for (const ObjectInstanceMsg& instance : all.instances) {
+    if (primary == nullptr || instance.views_fused > primary->views_fused) primary = &instance;
+  }
+  if (primary == nullptr) return;
+  const auto estimate = boost::make_shared<BinghamMixtureMsg>(primary->belief);
+  estimate->object_id = parameters_.object_id;
+  estimate_publisher_.publish(estimate);
+  const auto pose = boost::make_shared<geometry_msgs::PoseWithCovarianceStamped>();
+  pose->header = all.header;
+  pose->pose = primary->pose;
+  pose_publisher_.publish(pose);
+  geometry_msgs::TransformStamped transform;
+  transform.header = all.header;
+  transform.child_frame_id = parameters_.object_frame;
+  transform.transform.translation.x = primary->pose.pose.position.x;
+  transform.transform.translation.y = primary->pose.pose.position.y;
+  transform.transform.translation.z = primary->pose.pose.position.z;
+  transform.transform.rotation = primary->pose.pose.orientation;
+  transforms->push_back(transform);
 }
 
 void SceneEstimatorRos::rebroadcastTransforms() {

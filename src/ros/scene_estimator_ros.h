@@ -8,6 +8,7 @@
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_broadcaster.h>
 #include <tf2_ros/transform_listener.h>
+#include <view_direction_classification/ObjectInstances.h>
 #include <view_direction_classification/ResetInstance.h>
 
 #include <cstdint>
@@ -45,6 +46,8 @@ class SceneEstimatorRos {
   void processCloud(const sensor_msgs::PointCloud2& cloud);
   bool cameraPose(const sensor_msgs::PointCloud2& cloud, Eigen::Isometry3d* world_from_camera);
   void publishInstances(const std_msgs::Header& cloud_header);
+  void publishPrimary(const view_direction_classification::ObjectInstances& all,
+                      std::vector<geometry_msgs::TransformStamped>* transforms);
   void rebroadcastTransforms();
   void skip(const std::string& reason);
   bool resetService(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
@@ -56,6 +59,8 @@ class SceneEstimatorRos {
   ros::NodeHandle node_, private_node_;
   EstimatorRosParameters parameters_;
   SceneRosParameters scene_parameters_;
+  // A library of one from ~model (segmentation `scene`): also ~estimate, ~pose, object_frame.
+  bool single_object_topics_ = false;
 
   std::mutex estimator_mutex_;  // guards estimator_ and last_stamp_
   std::unique_ptr<SceneEstimator> estimator_;
@@ -69,7 +74,7 @@ class SceneEstimatorRos {
   std::mutex transforms_mutex_;
   std::vector<geometry_msgs::TransformStamped> transforms_;
   ros::Timer transforms_timer_;
-  ros::Publisher instances_publisher_, markers_publisher_;
+  ros::Publisher instances_publisher_, markers_publisher_, estimate_publisher_, pose_publisher_;
   ros::ServiceServer reset_server_, reset_instance_server_;
   ros::Subscriber cloud_subscriber_;
   diagnostic_updater::Updater diagnostics_;

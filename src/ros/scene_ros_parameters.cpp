@@ -82,9 +82,16 @@ std::vector<std::string> sceneParameterNames() {
   return names;
 }
 
-SceneRosParameters readSceneRosParameters(const ros::NodeHandle& node) {
+SceneRosParameters readSceneRosParameters(const ros::NodeHandle& node,
+                                          const EstimatorRosParameters& estimator) {
   SceneRosParameters p;
-  p.models = readModels(node);
+  if (node.hasParam("models")) {
+    p.models = readModels(node);
+  } else if (estimator.model_path.empty()) {
+    throw Error(kModelMissing);
+  } else {
+    p.models = {{estimator.object_id, estimator.model_path}};
+  }
   sceneParameterTable().read(ParameterReader(node), p);
   checkSceneEstimatorParameters(p.scene);
   return p;

@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "estimator_ros_parameters.h"
 #include "view_direction_classification/recognition/scene_estimator.h"
 #include "view_direction_classification/ros/parameter_table.h"
 
@@ -26,8 +27,11 @@ const ParameterTable<SceneRosParameters>& sceneParameterTable();
 // The table's names and ~models: every parameter a library needs.
 std::vector<std::string> sceneParameterNames();
 
-// Reads ~models and the scene table. Throws vdc::Error naming the parameter for a ~models that
-// is not a non-empty map from names to non-empty strings, or a bad scene setting.
-SceneRosParameters readSceneRosParameters(const ros::NodeHandle& private_node);
+// Reads ~models and the scene table. Without ~models (segmentation `scene` with one ~model) the
+// library is that model, named `object_id`. Throws vdc::Error naming the parameter for a
+// ~models that is not a non-empty map from names to non-empty strings, a missing model, or a bad
+// scene setting.
+SceneRosParameters readSceneRosParameters(const ros::NodeHandle& private_node,
+                                          const EstimatorRosParameters& estimator);
 
 }  // namespace vdc

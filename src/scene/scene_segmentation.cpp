@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <string>
@@ -170,9 +171,37 @@ void checkSceneSegmentationParameters(const SceneSegmentationParameters& p) {
       "min_part_fraction", p.min_part_fraction, "in [0, 0.5]");
 }
 
+namespace {
+
+// [m] A depth camera measures metres. A finite coordinate beyond this is a corrupt point, not a
+// measurement, and it would overflow the voxel keys and the k-d trees' splits (the fuzz target
+// found it): it counts as no point.
+constexpr float kMaxCoordinate = 1000.0f;
+
+bool isFar(const pcl::PointXYZ& p) {
+  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) &&
+         p.getVector3fMap().cwiseAbs().maxCoeff() > kMaxCoordinate;
+}
+
+// The cloud with its far points made NaN: the same size and layout, so indices stay valid.
+pcl::PointCloud<pcl::PointXYZ> withoutFarPoints(const pcl::PointCloud<pcl::PointXYZ>& cloud) {
+  pcl::PointCloud<pcl::PointXYZ> measured = cloud;
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  for (auto& p : measured.points) {
+    if (isFar(p)) p.x = p.y = p.z = nan;
+  }
+  measured.is_dense = false;
+  return measured;
+}
+
+}  // namespace
+
 SceneSegments segmentScene(const pcl::PointCloud<pcl::PointXYZ>& cloud,
                            const SceneSegmentationParameters& parameters) {
   checkSceneSegmentationParameters(parameters);
+  if (std::any_of(cloud.points.begin(), cloud.points.end(), isFar)) {
+    return segmentScene(withoutFarPoints(cloud), parameters);
+  }
   SceneSegments result;
   const std::vector<int> finite = finiteIndices(cloud);
   if (finite.size() < static_cast<std::size_t>(parameters.min_cluster_points)) {

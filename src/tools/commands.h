@@ -12,5 +12,6 @@ void addTrainCommand(CLI::App& app);
 void addInspectCommand(CLI::App& app);
 void addHeatmapCommand(CLI::App& app);
 void addEvaluateCommand(CLI::App& app);
+void addEvaluateScenesCommand(CLI::App& app);
 
 }  // namespace vdc::tools

@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   vdc::tools::addInspectCommand(app);
   vdc::tools::addHeatmapCommand(app);
   vdc::tools::addEvaluateCommand(app);
+  vdc::tools::addEvaluateScenesCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

@@ -113,3 +113,21 @@ TEST(ObjectSegmentationTest, ModeNamesRoundTripAndUnknownOnesAreRefused) {
 
 }  // namespace
 }  // namespace vdc
+
+namespace vdc {
+namespace {
+
+// `scene` names the scene layer (recognition/scene_estimator.h): parsed, but one object's
+// segmentation and estimator refuse it rather than guess what it means.
+TEST(SceneSegmentationMode, IsParsedButOneObjectsSegmentationRefusesIt) {
+  EXPECT_EQ(parseSegmentationMode("scene"), SegmentationMode::kScene);
+  EXPECT_EQ(segmentationModeName(SegmentationMode::kScene), "scene");
+  SegmentationParameters parameters;
+  parameters.mode = SegmentationMode::kScene;
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  cloud.push_back(pcl::PointXYZ(0.0f, 0.0f, 1.0f));
+  EXPECT_THROW(segmentObject(cloud, parameters), Error);
+}
+
+}  // namespace
+}  // namespace vdc

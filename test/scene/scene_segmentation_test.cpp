@@ -484,3 +484,26 @@ TEST(SceneSegmentation, RealKinectSceneWithDefaultsHasTheCartonAsOneCandidate) {
 
 }  // namespace
 }  // namespace vdc
+
+namespace vdc {
+namespace {
+
+// Found by the fuzz target: a finite point at 1e38 m overflowed the voxel keys (undefined
+// behaviour). A coordinate no depth camera measures is no point.
+TEST(SceneSegmentationFarPoints, APointFarBeyondAnyCameraIsNoPoint) {
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  for (int i = 0; i < 10; ++i) {
+    for (int j = 0; j < 10; ++j) cloud.push_back(pcl::PointXYZ(0.003f * i, 0.003f * j, 0.8f));
+  }
+  cloud.push_back(pcl::PointXYZ(1e38f, 0.0f, 1.0f));
+  cloud.push_back(pcl::PointXYZ(0.0f, -3e37f, 2000.0f));
+  SceneSegmentationParameters parameters;
+  parameters.split_touching = false;
+  const SceneSegments segments = segmentScene(cloud, parameters);
+  ASSERT_EQ(segments.candidates.size(), 1u) << segments.note;
+  EXPECT_EQ(segments.candidates[0].indices.size(), 100u);
+  EXPECT_LT(segments.candidates[0].indices.back(), 100);
+}
+
+}  // namespace
+}  // namespace vdc

@@ -19,6 +19,10 @@ enum class SegmentationMode {
   kNone,              // the whole cloud is the object (e.g. already segmented upstream)
   kRegionOfInterest,  // a ball around a known point, dominant plane removed, largest cluster kept
   kTabletop,          // the table removed, the cluster standing on it that fits the model's size
+  // Every object candidate of the scene, identified against the model(s) and verified against
+  // the whole scene: the scene layer's (recognition/scene_estimator.h), which gives each
+  // instance's estimator `kNone`; one OrientationEstimator refuses it.
+  kScene,
 };
 
 struct SegmentationParameters {
