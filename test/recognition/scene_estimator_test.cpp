@@ -188,3 +188,30 @@ TEST(SceneEstimator, BadInputIsSkippedOrRefused) {
 
 }  // namespace
 }  // namespace vdc
+
+namespace vdc {
+namespace {
+
+// Segmentation over-split on purpose (every slight concavity cuts, pieces down to 2 % kept): each
+// mug comes in a dozen pieces. The largest is still identified, and the others are parts of it,
+// not mugs of their own.
+TEST(SceneEstimatorOverSplit, AMugCutIntoPiecesIsOneInstanceWithItsPiecesAsParts) {
+  SceneEstimatorParameters parameters;
+  parameters.segmentation.concavity_tolerance_deg = 0.5;
+  parameters.segmentation.min_part_fraction = 0.02;
+  parameters.segmentation.supervoxel_seed = 0.01;
+  SceneEstimator estimator(ModelLibrary({{"mug", test::quickMugModel()}}), parameters);
+  const Eigen::Isometry3d pose = worldFromCamera(kFirstView);
+  const SceneUpdate update = estimator.update(render(pose, 1), pose, 0.0);
+  int parts = 0;
+  for (const CandidateOutcome& candidate : update.candidates) {
+    if (candidate.note.rfind("a part of mug_", 0) == 0) ++parts;
+  }
+  ASSERT_GE(parts, 6) << "the over-split did not cut the mugs: " << describe(estimator, update);
+  EXPECT_EQ(estimator.instances().size(), 2u) << describe(estimator, update);
+  EXPECT_NE(instanceAt(estimator, kFirstMug.translation()), nullptr);
+  EXPECT_NE(instanceAt(estimator, kSecondMug.translation()), nullptr);
+}
+
+}  // namespace
+}  // namespace vdc
