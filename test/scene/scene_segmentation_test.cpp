@@ -503,6 +503,12 @@ TEST(SceneSegmentationFarPoints, APointFarBeyondAnyCameraIsNoPoint) {
   ASSERT_EQ(segments.candidates.size(), 1u) << segments.note;
   EXPECT_EQ(segments.candidates[0].indices.size(), 100u);
   EXPECT_LT(segments.candidates[0].indices.back(), 100);
+  // Counted as points, the two far ones would make 102 finite points, enough for clusters of
+  // 101: the cloud has 100.
+  parameters.min_cluster_points = 101;
+  const SceneSegments too_few = segmentScene(cloud, parameters);
+  EXPECT_TRUE(too_few.candidates.empty());
+  EXPECT_NE(too_few.note.find("fewer finite points (100)"), std::string::npos) << too_few.note;
 }
 
 }  // namespace
