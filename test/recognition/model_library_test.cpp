@@ -5,20 +5,14 @@
 #include <memory>
 #include <string>
 
+#include "support/error_of.h"
 #include "support/quick_mug_model.h"
 #include "view_direction_classification/common/error.h"
 
 namespace vdc {
 namespace {
 
-std::string errorOf(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const Error& error) {
-    return error.what();
-  }
-  return "";
-}
+using test::errorOf;
 
 TEST(ModelLibrary, RefusesAnEmptyLibraryARepeatedNameAndAMissingBundle) {
   const auto mug = test::quickMugModel();

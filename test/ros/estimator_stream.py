@@ -10,7 +10,6 @@ distractor (estimator_stream.test). The camera starts at one direction and is mo
 - the truth lies within cone90_deg of the MAP: the belief is not overconfident;
 - the estimator looked at the stream: it received many more frames than it fused.
 """
-import math
 import threading
 import unittest
 
@@ -19,6 +18,7 @@ import rostest
 import tf2_ros
 from diagnostic_msgs.msg import DiagnosticArray
 from geometry_msgs.msg import Vector3
+from quaternions import rotation_error_deg
 from view_direction_classification.msg import BinghamMixture
 from view_direction_classification.srv import MoveCamera, MoveCameraRequest
 
@@ -30,11 +30,6 @@ DWELL_S = 4.0
 DISTANCE = 0.6
 BOUND_DEG = 60.0  # estimator_convergence_test.cpp's kBoundDeg
 MIN_FRAMES_RECEIVED = 30  # 15 Hz x 16 s dwelling would be 240
-
-
-def rotation_error_deg(q_a, q_b):
-    dot = abs(sum(a * b for a, b in zip(q_a, q_b)))
-    return math.degrees(2.0 * math.acos(min(1.0, dot)))
 
 
 class EstimatorStream(unittest.TestCase):

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "support/error_of.h"
 #include "view_direction_classification/common/error.h"
 
 namespace vdc {
@@ -48,14 +49,7 @@ void set(const ParameterTable<Settings>& t, Settings& settings, const std::strin
       .set(settings, value);
 }
 
-std::string errorOf(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const Error& error) {
-    return error.what();
-  }
-  return "";
-}
+using test::errorOf;
 
 TEST(ParameterTable, ABadValueIsAnErrorNamingTheParameterTheRuleAndTheValue) {
   const ParameterTable<Settings> t = table();

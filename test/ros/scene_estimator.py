@@ -15,6 +15,7 @@ import rospy
 import rostest
 import tf2_ros
 from geometry_msgs.msg import Vector3
+from quaternions import rotation_error_deg
 from view_direction_classification.msg import ObjectInstances
 from view_direction_classification.srv import (MoveCamera, MoveCameraRequest, ResetInstance,
                                                ResetInstanceRequest)
@@ -29,11 +30,6 @@ BOUND_DEG = 20.0  # the quick 12-direction model; the core's scene test reaches 
 
 def quaternion_from_yaw(yaw):
     return (0.0, 0.0, math.sin(yaw / 2.0), math.cos(yaw / 2.0))
-
-
-def rotation_error_deg(q_a, q_b):
-    dot = abs(sum(a * b for a, b in zip(q_a, q_b)))
-    return math.degrees(2.0 * math.acos(min(1.0, dot)))
 
 
 class SceneEstimator(unittest.TestCase):
