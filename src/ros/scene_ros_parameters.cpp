@@ -1,7 +1,6 @@
 #include "scene_ros_parameters.h"
 
-#include <XmlRpcValue.h>
-
+#include "model_library_parameter.h"
 #include "view_direction_classification/common/error.h"
 
 namespace vdc {
@@ -48,27 +47,6 @@ ParameterTable<SceneRosParameters> makeTable() {
   return table;
 }
 
-Error modelsError(const std::string& got) {
-  return parameterError("models", "a non-empty map from a name to a model bundle's path", got);
-}
-
-std::vector<std::pair<std::string, std::string>> readModels(const ros::NodeHandle& node) {
-  XmlRpc::XmlRpcValue value;
-  if (!node.getParam("models", value)) throw modelsError("nothing");
-  if (value.getType() != XmlRpc::XmlRpcValue::TypeStruct || value.size() == 0) {
-    throw modelsError("'" + value.toXml() + "'");
-  }
-  std::vector<std::pair<std::string, std::string>> models;
-  for (auto& [name, path] : value) {
-    if (path.getType() != XmlRpc::XmlRpcValue::TypeString ||
-        static_cast<std::string>(path).empty()) {
-      throw modelsError("an entry '" + name + "' that is not a non-empty path");
-    }
-    models.emplace_back(name, static_cast<std::string>(path));
-  }
-  return models;
-}
-
 }  // namespace
 
 const ParameterTable<SceneRosParameters>& sceneParameterTable() {
@@ -86,7 +64,7 @@ SceneRosParameters readSceneRosParameters(const ros::NodeHandle& node,
                                           const EstimatorRosParameters& estimator) {
   SceneRosParameters p;
   if (node.hasParam("models")) {
-    p.models = readModels(node);
+    p.models = readModelsParameter(node);
   } else if (estimator.model_path.empty()) {
     throw Error(kModelMissing);
   } else {
