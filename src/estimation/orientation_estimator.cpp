@@ -140,8 +140,9 @@ void OrientationEstimator::setParameters(EstimatorParameters parameters) {
   checkParameters(parameters);
   const SegmentationParameters& segmentation = parameters.segmentation;
   if (segmentation.mode == SegmentationMode::kScene) {
-    throw Error("segmentation 'scene' runs in the scene layer (SceneEstimator), which gives each "
-                "object's estimator 'none'");
+    throw Error(
+        "segmentation 'scene' runs in the scene layer (SceneEstimator), which gives each "
+        "object's estimator 'none'");
   }
   if (segmentation.mode == SegmentationMode::kTabletop && extent_.diagonal() <= 0.0) {
     throw Error("tabletop segmentation needs the model's extent, and this bundle has none");
@@ -200,10 +201,9 @@ void OrientationEstimator::setParameters(EstimatorParameters parameters) {
   }
 }
 
-ViewUpdate OrientationEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
-                                        const Eigen::Isometry3d& world_from_camera,
-                                        std::optional<double> time,
-                                        pcl::PointCloud<pcl::PointXYZ>::ConstPtr verification_scene) {
+ViewUpdate OrientationEstimator::update(
+    const pcl::PointCloud<pcl::PointXYZ>& cloud, const Eigen::Isometry3d& world_from_camera,
+    std::optional<double> time, pcl::PointCloud<pcl::PointXYZ>::ConstPtr verification_scene) {
   if (!world_from_camera.matrix().allFinite()) {
     throw Error("the camera pose given to the orientation estimator is not finite");
   }
@@ -306,8 +306,8 @@ ViewUpdate OrientationEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cl
   result.timing.fusion = millisecondsBetween(measured, fused);
   if (refiner_) {
     if (!verification_scene) verification_scene = verificationScene(cloud, object, segmentation);
-    refineAfterFusion(object.points, std::move(verification_scene), world_from_camera,
-                      measurement, line_of_sight, &result);
+    refineAfterFusion(object.points, std::move(verification_scene), world_from_camera, measurement,
+                      line_of_sight, &result);
   }
   const Clock::time_point refined = Clock::now();
   result.timing.refinement = millisecondsBetween(fused, refined);
@@ -345,6 +345,7 @@ void OrientationEstimator::refineAfterFusion(const pcl::PointCloud<pcl::PointXYZ
   refined_position_covariance_ = refinement.kept.front().position_covariance;
   result->refined_poses = static_cast<int>(refinement.kept.size());
   result->verified_score = refinement.kept.front().score.score();
+  result->identity_score = refinement.kept.front().score.identityScore();
 }
 
 void OrientationEstimator::checkBeliefOnView(const RefinementView& view,
