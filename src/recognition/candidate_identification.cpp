@@ -65,7 +65,11 @@ Identification identifyCandidate(
     const ModelLibrary& library, const EstimatorParameters& instance_parameters,
     const pcl::PointCloud<pcl::PointXYZ>& points, const Eigen::Vector3d& candidate_sides,
     pcl::PointCloud<pcl::PointXYZ>::ConstPtr scene, const Eigen::Isometry3d& world_from_camera,
-    std::optional<double> time, const IdentificationParameters& parameters) {
+    std::optional<double> time, const IdentificationParameters& parameters,
+    const std::vector<double>& score_penalties) {
+  if (!score_penalties.empty() && static_cast<int>(score_penalties.size()) != library.size()) {
+    throw Error("identification needs one score penalty per library model or none");
+  }
   Identification result;
   result.scores.assign(library.size(), std::nullopt);
   std::vector<std::unique_ptr<OrientationEstimator>> estimators(library.size());
@@ -76,6 +80,7 @@ Identification identifyCandidate(
         std::make_unique<OrientationEstimator>(library.models()[m].bundle, instance_parameters);
     updates[m] = estimators[m]->update(points, world_from_camera, time, scene);
     result.scores[m] = updates[m].identity_score;
+    if (result.scores[m] && !score_penalties.empty()) *result.scores[m] -= score_penalties[m];
   }
   result.probabilities = identityProbabilities(result.scores, parameters);
   const auto best = std::max_element(result.probabilities.begin(), result.probabilities.end());

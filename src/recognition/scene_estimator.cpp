@@ -67,6 +67,9 @@ SceneEstimator::SceneEstimator(ModelLibrary library, SceneEstimatorParameters pa
   for (const LibraryModel& model : library_.models()) {
     explanations_.push_back(std::make_unique<InstanceExplanation>(*model.bundle));
   }
+  shapes_ = std::make_unique<ShapeAlternative>(
+      library_, parameters_.instance.refinement_parameters.verification,
+      parameters_.identification.unknown_score);
 }
 
 const ObjectInstance* SceneEstimator::instance(int id) const {
@@ -153,7 +156,7 @@ SceneUpdate SceneEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
       outcome.note = "not identified: max_identifications reached on this frame";
     } else {
       ++identifications;
-      identify(candidates[c].points, scene, world_from_camera, time, &outcome);
+      identify(candidates[c], scene, world_from_camera, time, &outcome);
     }
   }
   result.total_ms = millisecondsSince(start);
@@ -168,6 +171,9 @@ std::vector<SceneEstimator::FrameCandidate> SceneEstimator::frameCandidates(
   for (const SceneCandidate& candidate : segments.candidates) {
     FrameCandidate frame_candidate;
     frame_candidate.points = candidatePoints(cloud, candidate);
+    if (candidate.support >= 0) {
+      frame_candidate.up = segments.planes[candidate.support].coefficients.head<3>().cast<float>();
+    }
     for (const auto& p : frame_candidate.points) {
       frame_candidate.points_world.push_back(world_from_camera_f * p.getVector3fMap());
     }
@@ -205,13 +211,14 @@ void SceneEstimator::updateAssignedInstances(std::vector<FrameCandidate>& candid
   for (std::size_t i = 0; i < instances_.size(); ++i) {
     ObjectInstance& instance = instances_[i];
     pcl::PointCloud<pcl::PointXYZ> points;
+    Eigen::Vector3f up = Eigen::Vector3f::Zero();
     int first = -1;  // its largest candidate: where its update is reported
     for (std::size_t c = 0; c < candidates.size(); ++c) {
       if (candidates[c].instance != static_cast<int>(i)) continue;
       points += candidates[c].points;
       result->candidates[c].instance = instance.id;
       if (first >= 0) result->candidates[c].note = "a part of " + instance.name;
-      if (first < 0) first = static_cast<int>(c);
+      if (first < 0) first = static_cast<int>(c), up = candidates[c].up;
     }
     if (first < 0) continue;
     const ViewUpdate update = instance.estimator->update(points, world_from_camera, time, scene);
@@ -219,16 +226,21 @@ void SceneEstimator::updateAssignedInstances(std::vector<FrameCandidate>& candid
     instance.centroid_world = result->candidates[first].centroid_world;
     instance.last_seen = time;
     ++instance.frames_seen;
-    if (update.outcome == FrameOutcome::kFused) weighIdentity(instance, update, world_from_camera);
+    if (update.outcome == FrameOutcome::kFused) {
+      weighIdentity(instance, update, shapes_->penalties(points, up)[instance.model],
+                    world_from_camera);
+    }
   }
   dropUnlikelyInstances(result);
 }
 
 void SceneEstimator::weighIdentity(ObjectInstance& instance, const ViewUpdate& update,
-                                   const Eigen::Isometry3d& world_from_camera) {
+                                   double penalty, const Eigen::Isometry3d& world_from_camera) {
   const double p = std::clamp(instance.identity_probability, 1e-9, 1.0 - 1e-9);
+  std::optional<double> score = update.identity_score;
+  if (score) *score -= penalty;
   const double log_odds =
-      std::log(p / (1.0 - p)) + identityEvidence(update.identity_score, parameters_.identification);
+      std::log(p / (1.0 - p)) + identityEvidence(score, parameters_.identification);
   instance.identity_probability = 1.0 / (1.0 + std::exp(-log_odds));
   if (instance.identity_probability < parameters_.identification.drop_probability) {
     // Remembered as unknown from here, so that it is not identified again from the same side.
@@ -268,13 +280,14 @@ bool SceneEstimator::retriedTooSoon(const CandidateOutcome& outcome,
   return false;
 }
 
-void SceneEstimator::identify(const pcl::PointCloud<pcl::PointXYZ>& points,
+void SceneEstimator::identify(const FrameCandidate& candidate,
                               pcl::PointCloud<pcl::PointXYZ>::ConstPtr scene,
                               const Eigen::Isometry3d& world_from_camera,
                               std::optional<double> time, CandidateOutcome* outcome) {
   Identification identification =
-      identifyCandidate(library_, parameters_.instance, points, outcome->sides, std::move(scene),
-                        world_from_camera, time, parameters_.identification);
+      identifyCandidate(library_, parameters_.instance, candidate.points, outcome->sides,
+                        std::move(scene), world_from_camera, time, parameters_.identification,
+                        shapes_->penalties(candidate.points, candidate.up));
   outcome->probability = identification.probability;
   if (identification.model < 0) {
     outcome->note = identification.reason;

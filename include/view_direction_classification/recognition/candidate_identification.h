@@ -52,10 +52,11 @@ double identityEvidence(std::optional<double> identity_score,
 
 // What one candidate is.
 struct Identification {
-  std::vector<double> probabilities;          // per library model, "unknown" last
-  std::vector<std::optional<double>> scores;  // per library model (nullopt: not fitting or none)
-  int model = -1;                             // the identified model, -1: unknown
-  double probability = 0.0;                   // of `model` (of unknown when -1)
+  std::vector<double> probabilities;  // per library model, "unknown" last
+  // Per library model, after its penalty (nullopt: not fitting or none verified).
+  std::vector<std::optional<double>> scores;
+  int model = -1;            // the identified model, -1: unknown
+  double probability = 0.0;  // of `model` (of unknown when -1)
   // The identified model's estimator, which has fused this view (null when unknown).
   std::unique_ptr<OrientationEstimator> estimator;
   ViewUpdate update;   // that estimator's update
@@ -65,11 +66,13 @@ struct Identification {
 // Identifies one candidate: a fresh estimator of each model whose size fits (instance settings,
 // segmentation `none`) fuses and refines the candidate's points, verified against `scene`
 // (occluders explain hidden parts, free space contradicts); the identity scores give the
-// probabilities. points and scene in the camera frame.
+// probabilities, each lowered by its entry of score_penalties (per library model, empty: none;
+// ShapeAlternative). points and scene in the camera frame.
 Identification identifyCandidate(
     const ModelLibrary& library, const EstimatorParameters& instance_parameters,
     const pcl::PointCloud<pcl::PointXYZ>& points, const Eigen::Vector3d& candidate_sides,
     pcl::PointCloud<pcl::PointXYZ>::ConstPtr scene, const Eigen::Isometry3d& world_from_camera,
-    std::optional<double> time, const IdentificationParameters& parameters);
+    std::optional<double> time, const IdentificationParameters& parameters,
+    const std::vector<double>& score_penalties = {});
 
 }  // namespace vdc

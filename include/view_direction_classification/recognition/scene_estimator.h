@@ -14,6 +14,7 @@
 #include "view_direction_classification/recognition/candidate_identification.h"
 #include "view_direction_classification/recognition/instance_explanation.h"
 #include "view_direction_classification/recognition/model_library.h"
+#include "view_direction_classification/recognition/shape_alternative.h"
 #include "view_direction_classification/scene/scene_segmentation.h"
 
 namespace vdc {
@@ -122,7 +123,8 @@ class SceneEstimator {
   struct FrameCandidate {
     pcl::PointCloud<pcl::PointXYZ> points;  // camera frame
     std::vector<Eigen::Vector3f> points_world;
-    int instance = -1;  // index into instances_ once assigned
+    Eigen::Vector3f up = Eigen::Vector3f::Zero();  // its support's normal (camera frame), if any
+    int instance = -1;                             // index into instances_ once assigned
   };
   bool cameraMoved(const Eigen::Isometry3d& world_from_camera) const;
   std::vector<FrameCandidate> frameCandidates(const pcl::PointCloud<pcl::PointXYZ>& cloud,
@@ -137,12 +139,12 @@ class SceneEstimator {
                                const Eigen::Isometry3d& world_from_camera,
                                std::optional<double> time, SceneUpdate* result);
   // Adds a fused view's evidence to the instance's identity (identityEvidence).
-  void weighIdentity(ObjectInstance& instance, const ViewUpdate& update,
+  // penalty: ShapeAlternative's for the instance's model on this view's points.
+  void weighIdentity(ObjectInstance& instance, const ViewUpdate& update, double penalty,
                      const Eigen::Isometry3d& world_from_camera);
   // Forgets the instances whose identity fell below drop_probability.
   void dropUnlikelyInstances(SceneUpdate* result);
-  void identify(const pcl::PointCloud<pcl::PointXYZ>& points,
-                pcl::PointCloud<pcl::PointXYZ>::ConstPtr scene,
+  void identify(const FrameCandidate& candidate, pcl::PointCloud<pcl::PointXYZ>::ConstPtr scene,
                 const Eigen::Isometry3d& world_from_camera, std::optional<double> time,
                 CandidateOutcome* outcome);
   bool retriedTooSoon(const CandidateOutcome& outcome,
@@ -151,6 +153,7 @@ class SceneEstimator {
   ModelLibrary library_;
   SceneEstimatorParameters parameters_;
   std::vector<std::unique_ptr<InstanceExplanation>> explanations_;  // per library model
+  std::unique_ptr<ShapeAlternative> shapes_;
   std::vector<ObjectInstance> instances_;
   std::vector<UnknownObject> unknowns_;
   std::vector<int> instances_named_;  // per model: instances named so far

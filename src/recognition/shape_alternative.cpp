@@ -1,0 +1,227 @@
+#include "view_direction_classification/recognition/shape_alternative.h"
+
+#include <pcl/ModelCoefficients.h>
+#include <pcl/PointIndices.h>
+#include <pcl/sample_consensus/method_types.h>
+#include <pcl/sample_consensus/model_types.h>
+#include <pcl/segmentation/sac_segmentation.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+
+namespace vdc {
+namespace {
+
+constexpr int kMinPoints = 30;
+constexpr std::size_t kMaxPoints = 2000;
+// Faces and axes within this of upright (or horizontal) count: a box on a table stands square.
+constexpr double kTiltTolerance = 10.0 * M_PI / 180.0;
+constexpr int kRansacIterations = 300;
+
+using Cloud = pcl::PointCloud<pcl::PointXYZ>;
+
+// The finite points, evenly strided down to at most kMaxPoints.
+Cloud::Ptr strided(const Cloud& points) {
+  Cloud finite;
+  for (const auto& p : points.points) {
+    if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) finite.push_back(p);
+  }
+  auto result = pcl::make_shared<Cloud>();
+  const std::size_t stride =
+      std::max<std::size_t>(1, (finite.size() + kMaxPoints - 1) / kMaxPoints);
+  for (std::size_t i = 0; i < finite.size(); i += stride) result->push_back(finite[i]);
+  return result;
+}
+
+// RANSAC for one plane of `model` type about `axis` (PCL: PARALLEL_PLANE contains the axis,
+// PERPENDICULAR_PLANE is normal to it) among the points not yet explained. Marks its inliers
+// explained; returns the plane's unit normal (zero when none was found).
+Eigen::Vector3f explainByPlane(const Cloud::Ptr& cloud, int model, const Eigen::Vector3f& axis,
+                               double tolerance, std::vector<char>* explained) {
+  auto remaining = pcl::make_shared<pcl::Indices>();
+  for (std::size_t i = 0; i < cloud->size(); ++i) {
+    if (!(*explained)[i]) remaining->push_back(static_cast<int>(i));
+  }
+  if (static_cast<int>(remaining->size()) < 3) return Eigen::Vector3f::Zero();
+  pcl::SACSegmentation<pcl::PointXYZ> ransac;  // seeded with a constant: deterministic
+  ransac.setModelType(model);
+  ransac.setMethodType(pcl::SAC_RANSAC);
+  ransac.setAxis(axis);
+  ransac.setEpsAngle(kTiltTolerance);
+  ransac.setDistanceThreshold(tolerance);
+  ransac.setMaxIterations(kRansacIterations);
+  ransac.setInputCloud(cloud);
+  ransac.setIndices(remaining);
+  pcl::PointIndices inliers;
+  pcl::ModelCoefficients coefficients;
+  ransac.segment(inliers, coefficients);
+  if (inliers.indices.empty() || coefficients.values.size() < 4) return Eigen::Vector3f::Zero();
+  for (int i : inliers.indices) (*explained)[i] = 1;
+  return Eigen::Vector3f(coefficients.values[0], coefficients.values[1], coefficients.values[2])
+      .normalized();
+}
+
+double fractionOf(const std::vector<char>& explained) {
+  return static_cast<double>(std::count(explained.begin(), explained.end(), 1)) /
+         static_cast<double>(explained.size());
+}
+
+// The points within `tolerance` of the highest (along `up`) become explained: a closed shape's
+// top. Not any horizontal plane: a mug's inside bottom, below its rim, is no can's lid.
+void explainTop(const Cloud& cloud, const Eigen::Vector3f& up, double tolerance,
+                std::vector<char>* explained) {
+  std::vector<float> heights;
+  for (const auto& p : cloud.points) heights.push_back(up.dot(p.getVector3fMap()));
+  // The 98th percentile, not the maximum: one noisy point does not lift the lid.
+  std::vector<float> sorted = heights;
+  const std::size_t k = (sorted.size() * 98) / 100;
+  std::nth_element(sorted.begin(), sorted.begin() + k, sorted.end());
+  const float top = sorted[k];
+  for (std::size_t i = 0; i < heights.size(); ++i) {
+    if (std::abs(heights[i] - top) <= tolerance) (*explained)[i] = 1;
+  }
+}
+
+// Up to two perpendicular upright faces and a horizontal top: what a camera sees of a box.
+double boxFraction(const Cloud::Ptr& cloud, const Eigen::Vector3f& up, double tolerance) {
+  std::vector<char> explained(cloud->size(), 0);
+  const Eigen::Vector3f first =
+      explainByPlane(cloud, pcl::SACMODEL_PARALLEL_PLANE, up, tolerance, &explained);
+  if (!first.isZero()) {
+    // The second face's normal is horizontal and square to the first's.
+    const Eigen::Vector3f across = up.cross(first).normalized();
+    explainByPlane(cloud, pcl::SACMODEL_PERPENDICULAR_PLANE, across, tolerance, &explained);
+  }
+  explainTop(*cloud, up, tolerance, &explained);
+  return fractionOf(explained);
+}
+
+// An upright cylinder's side (a circle in the plane square to `up`, PCL's 2D circle RANSAC) and
+// a horizontal top.
+double cylinderFraction(const Cloud::Ptr& cloud, const Eigen::Vector3f& up, double tolerance) {
+  const Eigen::Vector3f u = up.unitOrthogonal();
+  const Eigen::Vector3f v = up.cross(u);
+  auto flat = pcl::make_shared<Cloud>();
+  for (const auto& p : cloud->points) {
+    flat->push_back(pcl::PointXYZ(u.dot(p.getVector3fMap()), v.dot(p.getVector3fMap()), 0.0f));
+  }
+  std::vector<char> explained(cloud->size(), 0);
+  pcl::SACSegmentation<pcl::PointXYZ> ransac;
+  ransac.setModelType(pcl::SACMODEL_CIRCLE2D);
+  ransac.setMethodType(pcl::SAC_RANSAC);
+  ransac.setDistanceThreshold(tolerance);
+  ransac.setMaxIterations(kRansacIterations);
+  ransac.setRadiusLimits(0.005, 0.5);
+  ransac.setInputCloud(flat);
+  pcl::PointIndices inliers;
+  pcl::ModelCoefficients coefficients;
+  ransac.segment(inliers, coefficients);
+  if (coefficients.values.size() >= 3) {
+    // Only the side's half that faces the camera (at the origin of the points' frame): what is
+    // seen beyond the axis through an open top (a mug's inner wall) is no closed can's side.
+    const Eigen::Vector2f centre(coefficients.values[0], coefficients.values[1]);
+    for (int i : inliers.indices) {
+      const Eigen::Vector2f outward = (*flat)[i].getVector3fMap().head<2>() - centre;
+      const Eigen::Vector2f towards_camera = -(*flat)[i].getVector3fMap().head<2>();
+      if (outward.dot(towards_camera) > 0.0f) explained[i] = 1;
+    }
+  }
+  explainTop(*cloud, up, tolerance, &explained);
+  return fractionOf(explained);
+}
+
+// The fraction of `points` within `tolerance` of the box's faces or, about `axis`, of the
+// cylinder through the box's centre with the points' median radius and the box's end caps.
+double boxSurfaceFraction(const std::vector<Eigen::Vector3f>& points,
+                          const Eigen::AlignedBox3f& box, double tolerance) {
+  int near = 0;
+  for (const Eigen::Vector3f& p : points) {
+    const float inside = std::min((p - box.min()).minCoeff(), (box.max() - p).minCoeff());
+    if (std::abs(inside) <= tolerance) ++near;
+  }
+  return static_cast<double>(near) / points.size();
+}
+
+double cylinderSurfaceFraction(const std::vector<Eigen::Vector3f>& points,
+                               const Eigen::AlignedBox3f& box, int axis, double tolerance) {
+  const Eigen::Vector3f centre = box.center();
+  std::vector<float> radii;
+  for (const Eigen::Vector3f& p : points) {
+    Eigen::Vector3f d = p - centre;
+    d[axis] = 0.0f;
+    radii.push_back(d.norm());
+  }
+  std::vector<float> sorted = radii;
+  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+  const float radius = sorted[sorted.size() / 2];
+  int near = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const float to_cap = std::min(std::abs(points[i][axis] - box.min()[axis]),
+                                  std::abs(box.max()[axis] - points[i][axis]));
+    if (std::abs(radii[i] - radius) <= tolerance ||
+        (to_cap <= tolerance && radii[i] <= radius + tolerance)) {
+      ++near;
+    }
+  }
+  return static_cast<double>(near) / points.size();
+}
+
+}  // namespace
+
+double simpleShapeFraction(const pcl::PointCloud<pcl::PointXYZ>& points, const Eigen::Vector3f& up,
+                           double tolerance) {
+  if (!up.allFinite() || up.norm() < 0.5f) return 0.0;
+  const Cloud::Ptr cloud = strided(points);
+  if (static_cast<int>(cloud->size()) < kMinPoints) return 0.0;
+  const Eigen::Vector3f unit_up = up.normalized();
+  return std::max(boxFraction(cloud, unit_up, tolerance),
+                  cylinderFraction(cloud, unit_up, tolerance));
+}
+
+bool isSimpleShape(const std::vector<Eigen::Vector3f>& surface_points, double tolerance,
+                   double min_fraction) {
+  if (surface_points.empty()) return false;
+  Eigen::AlignedBox3f box;
+  for (const Eigen::Vector3f& p : surface_points) box.extend(p);
+  if (boxSurfaceFraction(surface_points, box, tolerance) >= min_fraction) return true;
+  for (int axis = 0; axis < 3; ++axis) {
+    if (cylinderSurfaceFraction(surface_points, box, axis, tolerance) >= min_fraction) return true;
+  }
+  return false;
+}
+
+ShapeAlternative::ShapeAlternative(const ModelLibrary& library, VerificationParameters verification,
+                                   double unknown_score)
+    : verification_(verification), unknown_score_(unknown_score) {
+  for (const LibraryModel& model : library.models()) {
+    simple_.push_back(isSimpleShape(model.bundle->surface_points));
+  }
+}
+
+std::vector<double> ShapeAlternative::penalties(const pcl::PointCloud<pcl::PointXYZ>& points,
+                                                const Eigen::Vector3f& up) const {
+  std::vector<double> result(simple_.size(), 0.0);
+  if (up.isZero() || points.empty() ||
+      std::all_of(simple_.begin(), simple_.end(), [](bool simple) { return simple; })) {
+    return result;
+  }
+  std::vector<float> depths;
+  for (const auto& p : points.points) {
+    if (std::isfinite(p.z)) depths.push_back(p.z);
+  }
+  if (depths.empty()) return result;
+  std::nth_element(depths.begin(), depths.begin() + depths.size() / 2, depths.end());
+  const double z = depths[depths.size() / 2];
+  // PoseVerifier::inlierTolerance at that depth: the model and the shape judged alike.
+  const double tolerance =
+      std::max(verification_.inlier_distance,
+               verification_.inlier_sigmas * verification_.depth_noise_at_1m * z * z);
+  const double fraction = simpleShapeFraction(points, up, tolerance);
+  const double excess = std::max(0.0, fraction - unknown_score_);
+  for (std::size_t m = 0; m < simple_.size(); ++m) result[m] = simple_[m] ? 0.0 : excess;
+  return result;
+}
+
+}  // namespace vdc
