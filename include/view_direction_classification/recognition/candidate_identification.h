@@ -64,11 +64,13 @@ struct Identification {
 // Identifies one candidate: a fresh estimator of each model whose size fits (instance settings,
 // segmentation `none`) fuses and refines the candidate's points, verified against `scene`
 // (occluders explain hidden parts, free space contradicts); the verified scores give the
-// probabilities. points and scene in the camera frame.
+// probabilities. points and scene in the camera frame. allowed (per library model; empty: all)
+// leaves the other models untried: a detector's class names the one model it may be.
 Identification identifyCandidate(
     const ModelLibrary& library, const EstimatorParameters& instance_parameters,
     const pcl::PointCloud<pcl::PointXYZ>& points, const Eigen::Vector3d& candidate_sides,
     pcl::PointCloud<pcl::PointXYZ>::ConstPtr scene, const Eigen::Isometry3d& world_from_camera,
-    std::optional<double> time, const IdentificationParameters& parameters);
+    std::optional<double> time, const IdentificationParameters& parameters,
+    const std::vector<bool>& allowed = {});
 
 }  // namespace vdc
