@@ -202,10 +202,9 @@ void OrientationEstimator::setParameters(EstimatorParameters parameters) {
   }
 }
 
-ViewUpdate OrientationEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
-                                        const Eigen::Isometry3d& world_from_camera,
-                                        std::optional<double> time,
-                                        pcl::PointCloud<pcl::PointXYZ>::ConstPtr verification_scene) {
+ViewUpdate OrientationEstimator::update(
+    const pcl::PointCloud<pcl::PointXYZ>& cloud, const Eigen::Isometry3d& world_from_camera,
+    std::optional<double> time, pcl::PointCloud<pcl::PointXYZ>::ConstPtr verification_scene) {
   if (!world_from_camera.matrix().allFinite()) {
     throw Error("the camera pose given to the orientation estimator is not finite");
   }
@@ -308,8 +307,8 @@ ViewUpdate OrientationEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cl
   result.timing.fusion = millisecondsBetween(measured, fused);
   if (refiner_) {
     if (!verification_scene) verification_scene = verificationScene(cloud, object, segmentation);
-    refineAfterFusion(object.points, std::move(verification_scene), world_from_camera,
-                      measurement, line_of_sight, &result);
+    refineAfterFusion(object.points, std::move(verification_scene), world_from_camera, measurement,
+                      line_of_sight, &result);
   }
   const Clock::time_point refined = Clock::now();
   result.timing.refinement = millisecondsBetween(fused, refined);
@@ -347,6 +346,7 @@ void OrientationEstimator::refineAfterFusion(const pcl::PointCloud<pcl::PointXYZ
   refined_position_covariance_ = refinement.kept.front().position_covariance;
   result->refined_poses = static_cast<int>(refinement.kept.size());
   result->verified_score = refinement.kept.front().score.score();
+  result->identity_score = refinement.kept.front().score.identityScore();
 }
 
 void OrientationEstimator::checkBeliefOnView(const RefinementView& view,

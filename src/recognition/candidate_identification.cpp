@@ -54,9 +54,9 @@ std::vector<double> identityProbabilities(const std::vector<std::optional<double
   return result;
 }
 
-double identityEvidence(std::optional<double> verified_score,
+double identityEvidence(std::optional<double> identity_score,
                         const IdentificationParameters& parameters) {
-  const double score = verified_score.value_or(parameters.unknown_score - 0.1);
+  const double score = identity_score.value_or(parameters.unknown_score - 0.1);
   const double evidence = (score - parameters.unknown_score) / parameters.temperature;
   return std::clamp(evidence, -parameters.max_view_evidence, parameters.max_view_evidence);
 }
@@ -84,7 +84,7 @@ Identification identifyCandidate(
     estimators[m] =
         std::make_unique<OrientationEstimator>(library.models()[m].bundle, instance_parameters);
     updates[m] = estimators[m]->update(points, world_from_camera, time, scene);
-    result.scores[m] = updates[m].verified_score;
+    result.scores[m] = updates[m].identity_score;
   }
   result.probabilities = identityProbabilities(result.scores, parameters);
   const auto best = std::max_element(result.probabilities.begin(), result.probabilities.end());

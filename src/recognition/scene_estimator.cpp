@@ -293,7 +293,7 @@ void SceneEstimator::weighIdentity(ObjectInstance& instance, const ViewUpdate& u
                                    const Eigen::Isometry3d& world_from_camera) {
   const double p = std::clamp(instance.identity_probability, 1e-9, 1.0 - 1e-9);
   const double log_odds =
-      std::log(p / (1.0 - p)) + identityEvidence(update.verified_score, parameters_.identification);
+      std::log(p / (1.0 - p)) + identityEvidence(update.identity_score, parameters_.identification);
   instance.identity_probability = 1.0 / (1.0 + std::exp(-log_odds));
   if (instance.identity_probability < parameters_.identification.drop_probability) {
     // Remembered as unknown from here, so that it is not identified again from the same side.

@@ -94,10 +94,14 @@ ModelSurface::ModelSurface(const std::vector<Eigen::Vector3f>& points,
     point.getNormalVector3fMap() = normals[i].normalized();
     cloud_->push_back(point);
   }
-  std::vector<Eigen::Vector3f> samples;
+  std::vector<Eigen::Vector3f> samples, sample_normals;
   samples.reserve(cloud_->size());
-  for (const auto& point : cloud_->points) samples.push_back(point.getVector3fMap());
-  nearest_ = std::make_unique<const NearestPoints>(std::move(samples));
+  sample_normals.reserve(cloud_->size());
+  for (const auto& point : cloud_->points) {
+    samples.push_back(point.getVector3fMap());
+    sample_normals.push_back(point.getNormalVector3fMap());
+  }
+  nearest_ = std::make_unique<const NearestPoints>(std::move(samples), std::move(sample_normals));
   symmetry_axes_ = nearSymmetryAxes(*cloud_);
 }
 }  // namespace vdc

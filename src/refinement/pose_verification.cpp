@@ -16,6 +16,10 @@ namespace {
 
 // [1] The largest |x / z| or |y / z| of an observed point the verifier looks at.
 constexpr float kMaxRayTangent = 1e6f;
+// An observed point is explained only by a sample whose normal makes at most 120 degrees
+// with the direction to the camera: the side the camera looks at, with slack for the
+// silhouette, where a small pose error turns a visible sample edge-on.
+constexpr float kMinObservedFacingCosine = -0.5f;
 
 void checkNonNegative(double value, const char* name) {
   if (!(value >= 0.0) || !std::isfinite(value)) {
@@ -122,24 +126,50 @@ double PoseVerifier::freeSpaceTolerance(double z) const {
 
 VerificationScore PoseVerifier::score(const Eigen::Isometry3d& world_from_object) const {
   VerificationScore result;
-  int inliers = 0, violations = 0;
-  for (const auto& view : views_) {
-    addViewScore(*view, world_from_object, &inliers, &violations, &result);
+  Counts counts;
+  for (const auto& view : views_) addViewScore(*view, world_from_object, &counts, &result);
+  if (result.observed > 0) {
+    result.inlier_fraction = double(counts.inliers) / result.observed;
+    result.facing_inlier_fraction = double(counts.facing_inliers) / result.observed;
   }
-  if (result.observed > 0) result.inlier_fraction = double(inliers) / result.observed;
-  if (result.predicted > 0) result.violation_fraction = double(violations) / result.predicted;
+  if (result.predicted > 0)
+    result.violation_fraction = double(counts.violations) / result.predicted;
   return result;
 }
 
+int PoseVerifier::facingRematches(const std::vector<Eigen::Vector3f>& matched,
+                                  const std::vector<float>& z,
+                                  const Eigen::Vector3f& camera) const {
+  if (matched.empty()) return 0;
+  std::vector<Eigen::Vector3f> towards_camera;
+  towards_camera.reserve(matched.size());
+  for (const Eigen::Vector3f& q : matched) towards_camera.push_back((camera - q).normalized());
+  const NearestPoints::FacingFilter facing{&towards_camera, kMinObservedFacingCosine};
+  std::vector<int> index;
+  std::vector<float> squared;
+  surface_->nearest().search(matched, &index, &squared, neighbour_radius_, &facing);
+  const auto& model = *surface_->cloud();
+  int explained = 0;
+  for (std::size_t i = 0; i < matched.size(); ++i) {
+    if (index[i] < 0) continue;
+    const auto& sample = model[index[i]];
+    const float offset = sample.getNormalVector3fMap().dot(matched[i] - sample.getVector3fMap());
+    if (std::abs(offset) <= inlierTolerance(z[i])) ++explained;
+  }
+  return explained;
+}
+
 void PoseVerifier::addViewScore(const IndexedView& view, const Eigen::Isometry3d& world_from_object,
-                                int* inliers, int* violations, VerificationScore* score) const {
+                                Counts* counts, VerificationScore* score) const {
   const Eigen::Isometry3d camera_from_object = view.camera_from_world * world_from_object;
   const Eigen::Isometry3f object_from_camera = camera_from_object.inverse().cast<float>();
   const float radius_sq = static_cast<float>(neighbour_radius_ * neighbour_radius_);
   std::vector<int> index;
   std::vector<float> squared;
 
-  // The observed half: is each point on the model's surface?
+  // The observed half: is each point on the model's surface? And on the side of it the camera
+  // sees (VerificationScore::facing_inlier_fraction)? Only the few inliers matched to a sample
+  // facing away are searched again, among the facing samples.
   const auto& model = *surface_->cloud();
   std::vector<Eigen::Vector3f> queries;
   const auto& observed = *view.object.points;
@@ -149,12 +179,25 @@ void PoseVerifier::addViewScore(const IndexedView& view, const Eigen::Isometry3d
   }
   surface_->nearest().search(queries, &index, &squared, neighbour_radius_);
   score->observed += static_cast<int>(queries.size());
+  const Eigen::Vector3f camera = object_from_camera.translation();
+  std::vector<Eigen::Vector3f> facing_away;
+  std::vector<float> facing_away_z;
   for (std::size_t i = 0; i < queries.size(); ++i) {
     if (index[i] < 0 || squared[i] > radius_sq) continue;
     const auto& sample = model[index[i]];
     const float offset = sample.getNormalVector3fMap().dot(queries[i] - sample.getVector3fMap());
-    if (std::abs(offset) <= inlierTolerance(observed[i].z)) ++*inliers;
+    if (std::abs(offset) > inlierTolerance(observed[i].z)) continue;
+    ++counts->inliers;
+    const Eigen::Vector3f towards_camera = camera - queries[i];
+    if (sample.getNormalVector3fMap().dot(towards_camera) >=
+        kMinObservedFacingCosine * towards_camera.norm()) {
+      ++counts->facing_inliers;
+    } else {
+      facing_away.push_back(queries[i]);
+      facing_away_z.push_back(observed[i].z);
+    }
   }
+  counts->facing_inliers += facingRematches(facing_away, facing_away_z, camera);
 
   // The predicted half: is each camera-facing sample where the camera saw a surface?
   const Eigen::Isometry3f transform = camera_from_object.cast<float>();
@@ -185,12 +228,12 @@ void PoseVerifier::addViewScore(const IndexedView& view, const Eigen::Isometry3d
         --score->predicted;
         continue;
       }
-      ++*violations;  // predicted where nothing was seen
+      ++counts->violations;  // predicted where nothing was seen
       continue;
     }
     const float observed_z = (*seen.points)[index[i]].z;
     if (predicted[i].z() < observed_z - freeSpaceTolerance(observed_z)) {
-      ++*violations;
+      ++counts->violations;
     }
   }
 }

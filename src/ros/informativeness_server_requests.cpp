@@ -8,6 +8,7 @@
 #include <tf2_eigen/tf2_eigen.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <utility>
 #include <vector>
@@ -23,6 +24,10 @@ namespace {
 
 using view_direction_classification::GetHeatmap;
 using view_direction_classification::GetNextBestView;
+
+constexpr const char* kNoSingleModel =
+    "This server has no single model (~model unset, only ~models): name an instance (or "
+    "\"most_uncertain\") in `instance`.";
 
 double minimumOfValid(const Eigen::VectorXf& values) {
   double minimum = 0.0;
@@ -44,6 +49,21 @@ Eigen::Isometry3d fromPoseMsg(const geometry_msgs::Pose& msg, std::size_t index)
   if (!position.allFinite() || !isUnitQuaternion(rotation, kRequestQuaternionTolerance)) {
     throw Error("Candidate pose " + std::to_string(index) +
                 " has a non-finite position or a non-unit orientation.");
+  }
+  Eigen::Isometry3d pose;
+  tf2::fromMsg(msg, pose);
+  return pose;
+}
+
+// An instance's pose from ~instances (fixed frame); throws vdc::Error for a broken one.
+Eigen::Isometry3d instancePose(const ObjectInstanceMsg& instance) {
+  const geometry_msgs::Pose& msg = instance.pose.pose;
+  const Eigen::Vector3d position(msg.position.x, msg.position.y, msg.position.z);
+  const Eigen::Vector4d rotation(msg.orientation.w, msg.orientation.x, msg.orientation.y,
+                                 msg.orientation.z);
+  if (!position.allFinite() || !isUnitQuaternion(rotation, kRequestQuaternionTolerance)) {
+    throw Error("Instance '" + instance.name +
+                "' has a non-finite position or a non-unit orientation in the latest instances.");
   }
   Eigen::Isometry3d pose;
   tf2::fromMsg(msg, pose);
@@ -73,11 +93,16 @@ sensor_msgs::PointCloud2 colouredSurface(const ModelBundle& model, const Eigen::
 
 InformativenessServerRequests::InformativenessServerRequests(
     std::shared_ptr<const ModelBundle> model, InformativenessServerRosParameters parameters,
-    FrameLookup lookup)
+    FrameLookup lookup, const ServedLibrary& library)
     : model_(std::move(model)),
-      scorer_(std::make_unique<ViewUtilityScorer>(model_)),
+      scorer_(model_ ? std::make_unique<ViewUtilityScorer>(model_) : nullptr),
       lookup_(std::move(lookup)),
-      parameters_(std::move(parameters)) {}
+      parameters_(std::move(parameters)) {
+  if (!model_ && library.empty()) throw Error("The server has neither a model nor a library.");
+  for (const auto& [name, bundle] : library) {
+    library_[name] = std::make_unique<ViewUtilityScorer>(bundle);
+  }
+}
 
 void InformativenessServerRequests::setParameters(
     const InformativenessServerRosParameters& parameters) {
@@ -111,6 +136,36 @@ void InformativenessServerRequests::receiveEstimate(
   latest_map_ = map;
 }
 
+void InformativenessServerRequests::receiveInstances(const ObjectInstancesMsg& msg) {
+  const std::string fixed_frame = parameters().fixed_frame;
+  if (!msg.header.frame_id.empty() && msg.header.frame_id != fixed_frame) {
+    throw Error("they are in frame '" + msg.header.frame_id + "', not the fixed frame '" +
+                fixed_frame + "'");
+  }
+  instances_.keep(msg);
+}
+
+ObjectInstanceMsg InformativenessServerRequests::chosenInstance(const std::string& wanted) const {
+  if (library_.empty()) {
+    throw Error(
+        "This server has no model library (~models), so it plans for its one object "
+        "only: leave `instance` empty.");
+  }
+  return instances_.choose(wanted);
+}
+
+const ViewUtilityScorer& InformativenessServerRequests::libraryScorer(
+    const ObjectInstanceMsg& instance) const {
+  const auto found = library_.find(instance.model);
+  if (found == library_.end()) {
+    std::string loaded;
+    for (const auto& entry : library_) loaded += (loaded.empty() ? "" : ", ") + entry.first;
+    throw Error("Instance '" + instance.name + "' is a '" + instance.model +
+                "', a model this server has not loaded (its ~models: " + loaded + ").");
+  }
+  return *found->second;
+}
+
 void InformativenessServerRequests::getHeatmap(const GetHeatmap::Request& request,
                                                GetHeatmap::Response& response) const {
   try {
@@ -125,7 +180,20 @@ void InformativenessServerRequests::getHeatmap(const GetHeatmap::Request& reques
 
 void InformativenessServerRequests::answerHeatmap(const GetHeatmap::Request& request,
                                                   GetHeatmap::Response& response) const {
-  const int views = scorer_->viewCount();
+  // The one model in object_frame, or the named instance's model in its own tf frame.
+  std::string frame = parameters().object_frame;
+  const ViewUtilityScorer* scorer = scorer_.get();
+  std::string whose;
+  if (!request.instance.empty()) {
+    const ObjectInstanceMsg instance = chosenInstance(request.instance);
+    scorer = &libraryScorer(instance);
+    frame = instance.name;
+    whose = " Instance " + instance.name + " (model " + instance.model + ").";
+  } else if (scorer == nullptr) {
+    throw Error(kNoSingleModel);
+  }
+  const ModelBundle& model = scorer->model();
+  const int views = scorer->viewCount();
   int view = -1;
   if (request.mode == GetHeatmap::Request::MODE_VIEW_INDEX) {
     if (request.view_index < 0 || request.view_index >= views) {
@@ -134,7 +202,7 @@ void InformativenessServerRequests::answerHeatmap(const GetHeatmap::Request& req
     }
     view = request.view_index;
   } else if (request.mode == GetHeatmap::Request::MODE_DIRECTION) {
-    view = scorer_->nearestView(
+    view = scorer->nearestView(
         Eigen::Vector3d(request.direction.x, request.direction.y, request.direction.z));
   } else if (request.mode != GetHeatmap::Request::MODE_GLOBAL) {
     throw Error("Unknown mode " + std::to_string(int(request.mode)) +
@@ -144,16 +212,17 @@ void InformativenessServerRequests::answerHeatmap(const GetHeatmap::Request& req
     throw Error("Unknown scaling \"" + request.scaling + "\": use \"median\" or \"max\".");
   }
   const Eigen::VectorXf scores =
-      view < 0 ? model_->global_scores : Eigen::VectorXf(model_->score_matrix.col(view));
+      view < 0 ? model.global_scores : Eigen::VectorXf(model.score_matrix.col(view));
   response.view_index = view;
   response.min = minimumOfValid(scores);
   response.median = medianOfValid(scores);
   response.max = maximumOfValid(scores);
   const double black_at = request.scaling == "max" ? response.max : response.median;
-  response.cloud = colouredSurface(*model_, scores, black_at, parameters().object_frame);
+  response.cloud = colouredSurface(model, scores, black_at, frame);
   response.scores.assign(scores.data(), scores.data() + scores.size());
   response.message =
-      view < 0 ? "Global scores." : "Scores of training view " + std::to_string(view) + ".";
+      (view < 0 ? "Global scores." : "Scores of training view " + std::to_string(view) + ".") +
+      whose;
 }
 
 void InformativenessServerRequests::nextBestView(const GetNextBestView::Request& request,
@@ -168,22 +237,61 @@ void InformativenessServerRequests::nextBestView(const GetNextBestView::Request&
   }
 }
 
+InformativenessServerRequests::Target InformativenessServerRequests::singleObjectTarget(
+    const InformativenessServerRosParameters& settings) const {
+  if (!scorer_) throw Error(kNoSingleModel);
+  Target target;
+  target.scorer = scorer_.get();
+  // The object's pose (published by the estimator, or by a simulator's ground truth).
+  try {
+    target.world_from_object =
+        lookupFixedFrom(settings.object_frame, settings.fixed_frame, "object pose");
+  } catch (const Error&) {
+    target.notes.push_back(
+        "The object frame '" + settings.object_frame + "' is not available in tf; the object " +
+        "was assumed at the origin of '" + settings.fixed_frame + "' with identity rotation.");
+  }
+  std::lock_guard<std::mutex> lock(belief_mutex_);
+  if (latest_belief_) {
+    target.belief = *latest_belief_;
+    target.map = latest_map_;
+    target.belief_note = "Belief from the latest estimate.";
+  } else {
+    target.belief_note = "No belief received yet: uniform belief.";
+  }
+  return target;
+}
+
+InformativenessServerRequests::Target InformativenessServerRequests::instanceTarget(
+    const std::string& wanted) const {
+  const ObjectInstanceMsg instance = chosenInstance(wanted);
+  Target target;
+  target.scorer = &libraryScorer(instance);
+  // ~instances is in the fixed frame (receiveInstances checks it): no tf lookup needed, and the
+  // pose is the one the belief belongs to.
+  target.world_from_object = instancePose(instance);
+  target.belief = fromBinghamMixtureMsg(instance.belief);
+  target.map = mapEstimate(*target.belief);
+  std::string note = "Instance " + instance.name + " (model " + instance.model;
+  if (wanted == kMostUncertain) {
+    char cone[32];
+    std::snprintf(cone, sizeof(cone), "%.1f", instance.cone90_deg);
+    note += ", the most uncertain: cone90 " + std::string(cone) + " deg";
+  }
+  target.notes.push_back(note + "), its pose from the latest instances.");
+  target.belief_note = "Belief of " + instance.name + " from the latest instances.";
+  return target;
+}
+
 void InformativenessServerRequests::answerNextBestView(const GetNextBestView::Request& request,
                                                        GetNextBestView::Response& response) {
   const InformativenessServerRosParameters settings = parameters();
   const ViewUtility utility =
       request.utility.empty() ? settings.default_utility : parseViewUtility(request.utility);
-  std::vector<std::string> notes;
-
-  // The object's pose (published by the estimator, or by a simulator's ground truth).
-  Eigen::Isometry3d world_from_object = Eigen::Isometry3d::Identity();
-  try {
-    world_from_object = lookupFixedFrom(settings.object_frame, settings.fixed_frame, "object pose");
-  } catch (const Error&) {
-    notes.push_back("The object frame '" + settings.object_frame +
-                    "' is not available in tf; the object " + "was assumed at the origin of '" +
-                    settings.fixed_frame + "' with identity rotation.");
-  }
+  Target target =
+      request.instance.empty() ? singleObjectTarget(settings) : instanceTarget(request.instance);
+  std::vector<std::string>& notes = target.notes;
+  const Eigen::Isometry3d& world_from_object = target.world_from_object;
 
   // Candidate camera poses in the fixed frame.
   std::vector<Eigen::Isometry3d> candidates;
@@ -202,7 +310,7 @@ void InformativenessServerRequests::answerNextBestView(const GetNextBestView::Re
         "sample_count > 1 and sample_distance > 0).");
   }
 
-  // The belief: the request's, else the latest estimate, else uniform.
+  // The belief: the request's, else the target's (latest estimate or instance), else uniform.
   PlanningScene scene;
   scene.object_position = world_from_object.translation();
   scene.occluder_radius = settings.occluder_radius;
@@ -215,17 +323,14 @@ void InformativenessServerRequests::answerNextBestView(const GetNextBestView::Re
     scene.belief = fromBinghamMixtureMsg(request.belief);
     scene.orientation = mapEstimate(scene.belief);
     notes.push_back("Belief from the request.");
+  } else if (target.belief) {
+    scene.belief = std::move(*target.belief);
+    scene.orientation = target.map;
+    notes.push_back(target.belief_note);
   } else {
-    std::lock_guard<std::mutex> lock(belief_mutex_);
-    if (latest_belief_) {
-      scene.belief = *latest_belief_;
-      scene.orientation = latest_map_;
-      notes.push_back("Belief from the latest estimate.");
-    } else {
-      // No estimate yet: a uniform belief, and the object's orientation as tf has it.
-      scene.orientation = quaternionFromRotationMatrix(world_from_object.linear());
-      notes.push_back("No belief received yet: uniform belief.");
-    }
+    notes.push_back(target.belief_note);
+    // No estimate yet: a uniform belief, and the object's orientation as tf has it.
+    scene.orientation = quaternionFromRotationMatrix(world_from_object.linear());
   }
 
   if (request.use_occluder) {
@@ -247,7 +352,7 @@ void InformativenessServerRequests::answerNextBestView(const GetNextBestView::Re
   NextBestViewOptions options;
   options.samples_per_component = settings.belief_samples_per_component;
   const std::vector<RankedCandidate> ranked =
-      rankCandidates(*scorer_, positions, utility, scene, options);
+      rankCandidates(*target.scorer, positions, utility, scene, options);
 
   response.ranked.header.frame_id = settings.fixed_frame;
   response.ranked.header.stamp = ros::Time::now();

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "view_direction_classification/common/error.h"
+#include "view_direction_classification/recognition/model_library.h"
 #include "view_direction_classification/ros/geometry_conversions.h"
 #include "view_direction_classification/ros/reconfigurable_parameters.h"
 #include "view_direction_classification/visualisation/heatmap_colours.h"
@@ -27,6 +28,24 @@ std_msgs::ColorRGBA toColour(const std::array<std::uint8_t, 3>& rgb) {
   return colour;
 }
 
+// ~model's bundle, or null without one (a server for a library's instances only).
+std::shared_ptr<const ModelBundle> loadSingleModel(
+    const InformativenessServerRosParameters& parameters) {
+  if (parameters.model_path.empty()) return nullptr;
+  return std::make_shared<const ModelBundle>(loadModelBundle(parameters.model_path));
+}
+
+// ~models' bundles, loaded and checked as the estimator loads its library (the same map).
+ServedLibrary loadLibrary(const InformativenessServerRosParameters& parameters) {
+  ServedLibrary library;
+  if (parameters.models.empty()) return library;
+  const ModelLibrary loaded = ModelLibrary::load(parameters.models);
+  for (const LibraryModel& model : loaded.models()) {
+    library.emplace_back(model.name, model.bundle);
+  }
+  return library;
+}
+
 }  // namespace
 
 InformativenessServerRos::InformativenessServerRos(ros::NodeHandle node,
@@ -36,14 +55,16 @@ InformativenessServerRos::InformativenessServerRos(ros::NodeHandle node,
       parameters_(readInformativenessServerRosParameters(private_node)),
       tf_listener_(tf_buffer_) {
   requests_ = std::make_unique<InformativenessServerRequests>(
-      std::make_shared<const ModelBundle>(loadModelBundle(parameters_.model_path)), parameters_,
-      [this](const std::string& frame, const char* what) { return lookupFixedFrom(frame, what); });
+      loadSingleModel(parameters_), parameters_,
+      [this](const std::string& frame, const char* what) { return lookupFixedFrom(frame, what); },
+      loadLibrary(parameters_));
 
   heatmap_publisher_ = private_node_.advertise<sensor_msgs::PointCloud2>("heatmap", 1, true);
   view_scores_publisher_ =
       private_node_.advertise<visualization_msgs::MarkerArray>("view_scores", 1, true);
-  publishScoreTopics();
-  if (parameters_.republish_period > 0.0) {
+  // The topics draw the one model in object_frame; a server for instances only has none.
+  if (requests_->hasSingleModel()) publishScoreTopics();
+  if (requests_->hasSingleModel() && parameters_.republish_period > 0.0) {
     // Latching alone is not enough for rviz: tf2 drops a stamp-0 message that arrives before its
     // frame exists, for good, as soon as the frame appears (BufferCore::testTransformableRequests
     // judges time 0 older than the cache). The object frame only exists after the first
@@ -60,13 +81,31 @@ InformativenessServerRos::InformativenessServerRos(ros::NodeHandle node,
       "next_best_view", &InformativenessServerRos::nextBestView, this);
   estimate_subscriber_ =
       node_.subscribe("estimate", 1, &InformativenessServerRos::receiveEstimate, this);
+  // Only a library can plan for the instances (without one, naming an instance is refused).
+  if (!parameters_.models.empty()) {
+    instances_subscriber_ =
+        node_.subscribe("instances", 1, &InformativenessServerRos::receiveInstances, this);
+  }
   startReconfigureServer();
-  ROS_INFO_NAMED(
-      private_node_.getNamespace(),
-      "Informativeness server: model %s (%d views, %zu surface points), object frame %s in %s",
-      parameters_.model_path.c_str(), requests_->scorer().viewCount(),
-      requests_->model().surface_points.size(), parameters_.object_frame.c_str(),
-      parameters_.fixed_frame.c_str());
+  logStart();
+}
+
+void InformativenessServerRos::logStart() const {
+  if (requests_->hasSingleModel()) {
+    ROS_INFO_NAMED(
+        private_node_.getNamespace(),
+        "Informativeness server: model %s (%d views, %zu surface points), object frame %s in %s",
+        parameters_.model_path.c_str(), requests_->scorer().viewCount(),
+        requests_->model().surface_points.size(), parameters_.object_frame.c_str(),
+        parameters_.fixed_frame.c_str());
+  }
+  if (parameters_.models.empty()) return;
+  std::string names;
+  for (const auto& entry : parameters_.models) names += (names.empty() ? "" : ", ") + entry.first;
+  ROS_INFO_NAMED(private_node_.getNamespace(),
+                 "Informativeness server: library of %zu models (%s) for the instances on %s",
+                 parameters_.models.size(), names.c_str(),
+                 instances_subscriber_.getTopic().c_str());
 }
 
 void InformativenessServerRos::startReconfigureServer() {
@@ -154,6 +193,16 @@ void InformativenessServerRos::receiveEstimate(
     requests_->receiveEstimate(*msg);
   } catch (const std::exception& error) {
     ROS_WARN_THROTTLE_NAMED(5.0, private_node_.getNamespace(), "Ignoring an estimate: %s",
+                            error.what());
+  }
+}
+
+void InformativenessServerRos::receiveInstances(
+    const view_direction_classification::ObjectInstances::ConstPtr& msg) {
+  try {
+    requests_->receiveInstances(*msg);
+  } catch (const std::exception& error) {
+    ROS_WARN_THROTTLE_NAMED(5.0, private_node_.getNamespace(), "Ignoring instances: %s",
                             error.what());
   }
 }

@@ -8,6 +8,7 @@
 #include <view_direction_classification/BinghamMixture.h>
 #include <view_direction_classification/GetHeatmap.h>
 #include <view_direction_classification/GetNextBestView.h>
+#include <view_direction_classification/ObjectInstances.h>
 #include <visualization_msgs/MarkerArray.h>
 
 #include <Eigen/Geometry>
@@ -29,9 +30,11 @@ using InformativenessServerConfig = view_direction_classification::Informativene
 // surface informativeness. Latched `~heatmap` (the surface set coloured by the global score) and
 // `~view_scores` (the training directions coloured by their view score), re-sent every
 // republish_period; services `~get_heatmap` and `~next_best_view`; tracks the belief published on
-// `estimate`. Parameters are documented in config/informativeness_server.yaml; the utility settings
-// of cfg/InformativenessServer.cfg can be changed while it runs (dynamic_reconfigure). Every bad
-// request is answered with success = false and a message; the server keeps serving.
+// `estimate` and, with a model library (~models), the instances published on `instances`, so a
+// request can name the instance to plan for. Parameters are documented in
+// config/informativeness_server.yaml; the utility settings of cfg/InformativenessServer.cfg can be
+// changed while it runs (dynamic_reconfigure). Every bad request is answered with success = false
+// and a message; the server keeps serving.
 class InformativenessServerRos {
  public:
   // Throws vdc::Error for a missing or invalid model bundle or invalid parameters.
@@ -43,6 +46,8 @@ class InformativenessServerRos {
   bool nextBestView(view_direction_classification::GetNextBestView::Request& request,
                     view_direction_classification::GetNextBestView::Response& response);
   void receiveEstimate(const view_direction_classification::BinghamMixture::ConstPtr& msg);
+  void receiveInstances(const view_direction_classification::ObjectInstances::ConstPtr& msg);
+  void logStart() const;
   void startReconfigureServer();
   void reconfigure(InformativenessServerConfig& config, std::uint32_t level);
 
@@ -69,6 +74,7 @@ class InformativenessServerRos {
   ros::WallTimer republish_timer_;
   ros::ServiceServer heatmap_service_, next_best_view_service_;
   ros::Subscriber estimate_subscriber_;
+  ros::Subscriber instances_subscriber_;  // with ~models only
   // dynamic_reconfigure's server (~set_parameters, ~parameter_updates). Its callback runs on the
   // same queue as the services (the requests' own lock guards their settings anyway).
   boost::recursive_mutex reconfigure_mutex_;

@@ -1,5 +1,7 @@
 #include "informativeness_server_ros_parameters.h"
 
+#include "model_library_parameter.h"
+
 namespace vdc {
 namespace {
 
@@ -8,7 +10,7 @@ ParameterTable<InformativenessServerRosParameters> makeTable() {
   ParameterTable<P> table;
   // ADDING A PARAMETER: a field in InformativenessServerRosParameters, one line below and its
   // entry in config/informativeness_server.yaml; to tune it live, also a line with the same
-  // name and type in cfg/InformativenessServer.cfg.
+  // name and type in cfg/InformativenessServer.cfg. (`models`, a map, is read outside it.)
   table.addRequired("model", &P::model_path, nonEmptyString(), kModelMissing)
       .add("fixed_frame", &P::fixed_frame, frameName())
       .add("object_frame", &P::object_frame, frameName())
@@ -33,12 +35,21 @@ const ParameterTable<InformativenessServerRosParameters>& informativenessServerP
   return table;
 }
 
+std::vector<std::string> informativenessServerParameterNames() {
+  std::vector<std::string> names = informativenessServerParameterTable().names();
+  names.push_back("models");
+  return names;
+}
+
 InformativenessServerRosParameters readInformativenessServerRosParameters(
     const ros::NodeHandle& node) {
   InformativenessServerRosParameters p;
   const ParameterReader reader(node);
-  informativenessServerParameterTable().read(reader, p);
-  reader.warnAboutUnknownParameters(informativenessServerParameterTable().names());
+  // With a library the server may serve instances only, so its one ~model becomes optional.
+  const bool with_library = node.hasParam("models");
+  informativenessServerParameterTable().read(reader, p, with_library);
+  if (with_library) p.models = readModelsParameter(node);
+  reader.warnAboutUnknownParameters(informativenessServerParameterNames());
   return p;
 }
 

@@ -3,6 +3,8 @@
 #include <ros/node_handle.h>
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "view_direction_classification/planning/next_best_view.h"
 #include "view_direction_classification/ros/parameter_table.h"
@@ -12,7 +14,10 @@ namespace vdc {
 // Everything the informativeness_server node reads from its private parameters
 // (config/informativeness_server.yaml documents each one).
 struct InformativenessServerRosParameters {
-  std::string model_path;  // model bundle (.h5), required
+  std::string model_path;  // model bundle (.h5) of the one object; required without `models`
+  // ~models: the library the instances' requests are planned with, a map from a name (an
+  // ObjectInstance's `model`) to a bundle's path (read outside the table: a map). Empty if unset.
+  std::vector<std::pair<std::string, std::string>> models;
   std::string fixed_frame = "world";
   std::string object_frame = "object";
   int label_best = 3;                    // text labels on the best directions of ~view_scores
@@ -27,8 +32,11 @@ struct InformativenessServerRosParameters {
 
 // The server's parameters: names, fields and rules (informativeness_server_ros_parameters.cpp).
 const ParameterTable<InformativenessServerRosParameters>& informativenessServerParameterTable();
+// The table's names and ~models: every parameter the server reads.
+std::vector<std::string> informativenessServerParameterNames();
 
-// Reads and validates the parameters of `private_node`; throws vdc::Error naming the parameter.
+// Reads and validates the parameters of `private_node` (~model is not required when ~models is
+// set); throws vdc::Error naming the parameter.
 InformativenessServerRosParameters readInformativenessServerRosParameters(
     const ros::NodeHandle& private_node);
 

@@ -6,6 +6,7 @@
 #include <map>
 #include <string>
 
+#include "model_library_parameter.h"
 #include "view_direction_classification/common/error.h"
 
 namespace vdc {
@@ -55,27 +56,6 @@ ParameterTable<SceneRosParameters> makeTable() {
            numberAtLeast(0.0, "0: the cloud's stamp exactly"))
       .add("labels_timeout", &P::labels_timeout, numberAtLeast(0.0));
   return table;
-}
-
-Error modelsError(const std::string& got) {
-  return parameterError("models", "a non-empty map from a name to a model bundle's path", got);
-}
-
-std::vector<std::pair<std::string, std::string>> readModels(const ros::NodeHandle& node) {
-  XmlRpc::XmlRpcValue value;
-  if (!node.getParam("models", value)) throw modelsError("nothing");
-  if (value.getType() != XmlRpc::XmlRpcValue::TypeStruct || value.size() == 0) {
-    throw modelsError("'" + value.toXml() + "'");
-  }
-  std::vector<std::pair<std::string, std::string>> models;
-  for (auto& [name, path] : value) {
-    if (path.getType() != XmlRpc::XmlRpcValue::TypeString ||
-        static_cast<std::string>(path).empty()) {
-      throw modelsError("an entry '" + name + "' that is not a non-empty path");
-    }
-    models.emplace_back(name, static_cast<std::string>(path));
-  }
-  return models;
 }
 
 Error labelModelsError(const std::string& got) {
@@ -130,7 +110,7 @@ SceneRosParameters readSceneRosParameters(const ros::NodeHandle& node,
                                           const EstimatorRosParameters& estimator) {
   SceneRosParameters p;
   if (node.hasParam("models")) {
-    p.models = readModels(node);
+    p.models = readModelsParameter(node);
   } else if (estimator.model_path.empty()) {
     throw Error(kModelMissing);
   } else {

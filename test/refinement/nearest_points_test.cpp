@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "view_direction_classification/common/error.h"
+
 #include <cmath>
 #include <limits>
 #include <random>
@@ -106,6 +108,39 @@ TEST(NearestPoints, QueriesFarOffOrNotFiniteFindNothingWithinABoundAndDoNotStopT
   EXPECT_EQ(indices[1], -1);
   EXPECT_EQ(indices[2], -1);
   EXPECT_GE(indices[3], 0);
+}
+
+TEST(NearestPoints, AFacingFilterSkipsPointsWhoseNormalTurnsAwayFromTheQuerysCamera) {
+  // Two sides of a thin wall: the outside at x = 0 faces -x, the inside at x = 4 mm faces +x. A
+  // query 1 mm behind the outside, nearer the inside, seen by a camera at x = -1.
+  const NearestPoints wall({Eigen::Vector3f(0.0f, 0.0f, 0.0f), Eigen::Vector3f(0.004f, 0.0f, 0.0f)},
+                           {Eigen::Vector3f(-1.0f, 0.0f, 0.0f), Eigen::Vector3f(1.0f, 0.0f, 0.0f)});
+  const std::vector<Eigen::Vector3f> queries{Eigen::Vector3f(0.003f, 0.0f, 0.0f)};
+  std::vector<int> indices;
+  std::vector<float> squared;
+  wall.search(queries, &indices, &squared);
+  EXPECT_EQ(indices[0], 1);  // unfiltered: the inside, 1 mm away
+  const std::vector<Eigen::Vector3f> towards_camera{Eigen::Vector3f(-1.0f, 0.0f, 0.0f)};
+  const NearestPoints::FacingFilter facing{&towards_camera, 0.0f};
+  wall.search(queries, &indices, &squared, 0.01, &facing);
+  EXPECT_EQ(indices[0], 0);  // the outside, 3 mm away
+  EXPECT_NEAR(squared[0], 0.003f * 0.003f, 1e-9f);
+  // Within a bound that only the inside meets: nothing.
+  wall.search(queries, &indices, &squared, 0.002, &facing);
+  EXPECT_EQ(indices[0], -1);
+}
+
+TEST(NearestPoints, AFacingFilterNeedsNormalsAndOneDirectionPerQuery) {
+  const std::vector<Eigen::Vector3f> points{Eigen::Vector3f::Zero()};
+  const std::vector<Eigen::Vector3f> queries{Eigen::Vector3f::Zero(), Eigen::Vector3f::Ones()};
+  std::vector<int> indices;
+  std::vector<float> squared;
+  const std::vector<Eigen::Vector3f> one{Eigen::Vector3f::UnitX()};
+  const NearestPoints::FacingFilter facing{&one, 0.0f};
+  EXPECT_THROW(NearestPoints(points).search(queries, &indices, &squared, 1.0, &facing), Error);
+  const NearestPoints with_normals(points, {Eigen::Vector3f::UnitX()});
+  EXPECT_THROW(with_normals.search(queries, &indices, &squared, 1.0, &facing), Error);
+  EXPECT_THROW(NearestPoints(points, {}), Error);
 }
 
 }  // namespace

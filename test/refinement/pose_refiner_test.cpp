@@ -20,6 +20,7 @@
 #include "view_direction_classification/geometry/camera.h"
 #include "view_direction_classification/geometry/depth_renderer.h"
 #include "view_direction_classification/geometry/mug_mesh.h"
+#include "view_direction_classification/geometry/primitive_meshes.h"
 #include "view_direction_classification/geometry/scene.h"
 #include "view_direction_classification/geometry/surface_sampling.h"
 
@@ -335,6 +336,35 @@ TEST_F(PoseRefinerTest, VerificationRejectsTheMirroredHandle) {
                      position(), {v});
   ASSERT_EQ(both.kept.size(), 1u) << describe(both, truth());
   EXPECT_LT(rotationErrorDeg(both.kept[0].orientation, truth()), 2.0) << describe(both, truth());
+}
+
+TEST_F(PoseRefinerTest, TheInsideOfAThinWallExplainsANarrowerCanButItsIdentityScoreDoesNot) {
+  // A closed can exactly as wide as the mug's inside, standing where the mug would, seen level:
+  // its front lies on the mug's inner wall, 4 mm behind the outer one, well within the free-space
+  // tolerance. Matched to any side of the surface, the mug explains the can; only its outer wall
+  // faces the camera there, and that is 4 mm off.
+  const RefinementView mug = view(Eigen::Vector3d(-1.0, 0.0, 0.0), 0.0);
+  const MugShape shape;
+  const double inner_radius = shape.outer_radius - shape.wall;
+  const TriangleMesh can = makeCylinderMesh(inner_radius, shape.height - shape.bottom, 96);
+  // The can's origin is its base centre, the mug's its body's centre.
+  Eigen::Isometry3d mug_from_can = Eigen::Isometry3d::Identity();
+  mug_from_can.translation().z() = -0.5 * shape.height + shape.bottom;
+  const Eigen::Isometry3d camera_from_can =
+      mug.world_from_camera.inverse() * world_from_object_ * mug_from_can;
+  RefinementView can_view = mug;
+  std::mt19937 rng(5);
+  can_view.points = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>(
+      DepthRenderer(can).render(camera_from_can, DepthNoiseModel{true}, &rng));
+  ASSERT_GT(can_view.points->size(), 500u);
+
+  const VerificationScore on_can = PoseVerifier(*surface_, {can_view}).score(world_from_object_);
+  EXPECT_GT(on_can.score(), 0.8) << "inliers " << on_can.inlier_fraction;
+  EXPECT_LT(on_can.identityScore(), 0.5) << "facing inliers " << on_can.facing_inlier_fraction;
+  // The mug itself: every inlier is on a side its camera sees.
+  const VerificationScore on_mug = PoseVerifier(*surface_, {mug}).score(world_from_object_);
+  EXPECT_GT(on_mug.identityScore(), 0.95);
+  EXPECT_NEAR(on_mug.identityScore(), on_mug.score(), 0.01);
 }
 
 TEST_F(PoseRefinerTest, KeepsBothModesOfAMirrorAmbiguousView) {

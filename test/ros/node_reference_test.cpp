@@ -204,7 +204,11 @@ const DocumentedNode<SceneRosParameters> kScene{
     "orientation_estimator", "estimator.yaml",           sceneParameterTable(),
     "Scene parameters",      {"models", "label_models"}, estimatorParameterTable().names()};
 const DocumentedNode<InformativenessServerRosParameters> kServer{
-    "informativeness_server", "informativeness_server.yaml", informativenessServerParameterTable()};
+    "informativeness_server",
+    "informativeness_server.yaml",
+    informativenessServerParameterTable(),
+    "Parameters",
+    {"models"}};
 const DocumentedNode<SimulatedDepthCameraRosParameters> kCamera{
     "simulated_depth_camera", "simulated_depth_camera.yaml", simulatedDepthCameraParameterTable()};
 

@@ -145,9 +145,11 @@ struct ViewUpdate {
   // refinement_skip_reason then says why when the input was bad).
   int refined_poses = 0;
   // The best fused pose's verification score on this view (refined_poses > 0), in [-1, 1]: how
-  // well the model explains the object's points and the scene around them. The scene layer
-  // compares it between models to identify an object.
+  // well the model explains the object's points and the scene around them.
   std::optional<double> verified_score;
+  // The same pose's VerificationScore::identityScore (only samples on the side the camera sees
+  // explain points): what the scene layer compares between models.
+  std::optional<double> identity_score;
   std::string refinement_skip_reason;
   // The belief's best pose fitted this view poorly, so a search beyond its hypotheses ran
   // (belief_check.h); rebuild_reason non-empty: the search's pose fitted the latest views clearly

@@ -18,11 +18,12 @@ namespace vdc {
 struct IdentificationParameters {
   // A candidate fits a model when its size does (ModelLibrary::fitting).
   double extent_tolerance = 0.15;
-  // Each fitting model's best verified pose on the view scores s_m in [-1, 1] (none verified:
-  // not a candidate model). "Unknown" scores unknown_score, refinement's acceptance: a model
-  // that explains the candidate barely as well as that is as likely as no model. The
-  // probabilities are a softmax of the scores over `temperature`: 0.05 makes a 0.05 better
-  // score e times as likely.
+  // Each fitting model's best verified pose on the view scores s_m in [-1, 1], its identity
+  // score (ViewUpdate::identity_score: points explained only by the model's sides the camera
+  // sees; none verified: not a candidate model). "Unknown" scores unknown_score, refinement's
+  // acceptance: a model that explains the candidate barely as well as that is as likely as no
+  // model. The probabilities are a softmax of the scores over `temperature`: 0.05 makes a 0.05
+  // better score e times as likely.
   double unknown_score = 0.8;
   double temperature = 0.05;
   // The candidate is the most probable model when its probability reaches this, else unknown.
@@ -44,9 +45,9 @@ std::vector<double> identityProbabilities(const std::vector<std::optional<double
                                           const IdentificationParameters& parameters);
 
 // One fused view's evidence for an instance's model against "unknown", in log-odds: (s -
-// unknown_score) / temperature for the view's best verified score s, capped at
+// unknown_score) / temperature for the view's best pose's identity score s, capped at
 // +-max_view_evidence; a view on which no pose verified counts as s = unknown_score - 0.1.
-double identityEvidence(std::optional<double> verified_score,
+double identityEvidence(std::optional<double> identity_score,
                         const IdentificationParameters& parameters);
 
 // What one candidate is.
@@ -63,7 +64,7 @@ struct Identification {
 
 // Identifies one candidate: a fresh estimator of each model whose size fits (instance settings,
 // segmentation `none`) fuses and refines the candidate's points, verified against `scene`
-// (occluders explain hidden parts, free space contradicts); the verified scores give the
+// (occluders explain hidden parts, free space contradicts); the identity scores give the
 // probabilities. points and scene in the camera frame. allowed (per library model; empty: all)
 // leaves the other models untried: a detector's class names the one model it may be.
 Identification identifyCandidate(

@@ -61,6 +61,11 @@ void checkVerificationParameters(const VerificationParameters& parameters);
 // model's camera-facing samples are its predicted depth, the observed points the measured one.
 struct VerificationScore {
   double inlier_fraction = 0.0;  // observed points the model explains
+  // Observed points the model explains with a sample on the side the camera sees. A thin wall's
+  // inner side lies a wall's thickness behind its outer one, so inlier_fraction lets a mug's
+  // inside explain the front of a slightly narrower can; refinement keeps that leniency (its
+  // coarse ICP may settle a wall's thickness off before the polish), identification does not.
+  double facing_inlier_fraction = 0.0;
   // Predicted samples the observation contradicts: in front of the observed surface (the camera
   // saw through them), or where nothing was observed at all (the object's points are segmented,
   // so a prediction outside them is a surface that is not there). Samples behind the observed
@@ -71,6 +76,8 @@ struct VerificationScore {
   // the points with a model part sticking out into free space is as wrong as one that leaves
   // points unexplained.
   double score() const { return inlier_fraction - violation_fraction; }
+  // The same with facing inliers: how well the model, and no other object, explains the view.
+  double identityScore() const { return facing_inlier_fraction - violation_fraction; }
 };
 
 // Scores poses of the model against a fixed set of views. Building one indexes each view's
@@ -100,8 +107,16 @@ class PoseVerifier {
   std::unique_ptr<IndexedView> indexView(const RefinementView& view) const;
   RayIndex indexScene(const pcl::PointCloud<pcl::PointXYZ>& scene,
                       const pcl::PointCloud<pcl::PointXYZ>& object) const;
+  // Counts of one pose over the views.
+  struct Counts {
+    int inliers = 0, facing_inliers = 0, violations = 0;
+  };
   void addViewScore(const IndexedView& view, const Eigen::Isometry3d& world_from_object,
-                    int* inliers, int* violations, VerificationScore* score) const;
+                    Counts* counts, VerificationScore* score) const;
+  // Of the inliers `matched` (object frame, each matched to `index`'s sample) whose sample faces
+  // away from the camera at `camera` (object frame): how many a sample facing it explains.
+  int facingRematches(const std::vector<Eigen::Vector3f>& matched, const std::vector<float>& z,
+                      const Eigen::Vector3f& camera) const;
 
   std::shared_ptr<const ModelSurface> surface_;
   std::vector<std::unique_ptr<IndexedView>> views_;
