@@ -172,7 +172,9 @@ ObjectSegment segmentObject(const pcl::PointCloud<pcl::PointXYZ>& cloud,
                               context);
       break;
     case SegmentationMode::kScene:
-      throw Error("segmentation 'scene' is the scene layer's (SceneEstimator), not one object's");
+    case SegmentationMode::kLabels:
+      throw Error("segmentation '" + segmentationModeName(parameters.mode) +
+                  "' is the scene layer's (SceneEstimator), not one object's");
   }
   if (object.failure.empty() &&
       touchesImageBorder(cloud, object.indices, parameters.border_margin)) {
@@ -186,8 +188,9 @@ SegmentationMode parseSegmentationMode(const std::string& name) {
   if (name == "region_of_interest") return SegmentationMode::kRegionOfInterest;
   if (name == "tabletop") return SegmentationMode::kTabletop;
   if (name == "scene") return SegmentationMode::kScene;
+  if (name == "labels") return SegmentationMode::kLabels;
   throw Error("unknown segmentation '" + name +
-              "'; expected none, region_of_interest, tabletop or scene");
+              "'; expected none, region_of_interest, tabletop, scene or labels");
 }
 
 std::string segmentationModeName(SegmentationMode mode) {
@@ -200,6 +203,8 @@ std::string segmentationModeName(SegmentationMode mode) {
       return "tabletop";
     case SegmentationMode::kScene:
       return "scene";
+    case SegmentationMode::kLabels:
+      return "labels";
   }
   return "unknown";
 }

@@ -139,10 +139,11 @@ void OrientationEstimator::setParameters(EstimatorParameters parameters) {
   // Everything is checked and derived into locals first, so a refused value changes nothing.
   checkParameters(parameters);
   const SegmentationParameters& segmentation = parameters.segmentation;
-  if (segmentation.mode == SegmentationMode::kScene) {
-    throw Error(
-        "segmentation 'scene' runs in the scene layer (SceneEstimator), which gives each "
-        "object's estimator 'none'");
+  if (segmentation.mode == SegmentationMode::kScene ||
+      segmentation.mode == SegmentationMode::kLabels) {
+    throw Error("segmentation '" + segmentationModeName(segmentation.mode) +
+                "' runs in the scene layer (SceneEstimator), which gives each object's "
+                "estimator 'none'");
   }
   if (segmentation.mode == SegmentationMode::kTabletop && extent_.diagonal() <= 0.0) {
     throw Error("tabletop segmentation needs the model's extent, and this bundle has none");

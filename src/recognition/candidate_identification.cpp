@@ -66,7 +66,7 @@ Identification identifyCandidate(
     const pcl::PointCloud<pcl::PointXYZ>& points, const Eigen::Vector3d& candidate_sides,
     pcl::PointCloud<pcl::PointXYZ>::ConstPtr scene, const Eigen::Isometry3d& world_from_camera,
     std::optional<double> time, const IdentificationParameters& parameters,
-    const std::vector<double>& score_penalties) {
+    const std::vector<double>& score_penalties, const std::vector<bool>& allowed) {
   if (!score_penalties.empty() && static_cast<int>(score_penalties.size()) != library.size()) {
     throw Error("identification needs one score penalty per library model or none");
   }
@@ -74,7 +74,15 @@ Identification identifyCandidate(
   result.scores.assign(library.size(), std::nullopt);
   std::vector<std::unique_ptr<OrientationEstimator>> estimators(library.size());
   std::vector<ViewUpdate> updates(library.size());
-  const std::vector<int> fitting = library.fitting(candidate_sides, parameters.extent_tolerance);
+  std::vector<int> fitting = library.fitting(candidate_sides, parameters.extent_tolerance);
+  if (!allowed.empty()) {
+    fitting.erase(std::remove_if(fitting.begin(), fitting.end(),
+                                 [&](int m) {
+                                   const auto k = static_cast<std::size_t>(m);
+                                   return k >= allowed.size() || !allowed[k];
+                                 }),
+                  fitting.end());
+  }
   for (int m : fitting) {
     estimators[m] =
         std::make_unique<OrientationEstimator>(library.models()[m].bundle, instance_parameters);

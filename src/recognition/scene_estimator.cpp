@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <string>
 #include <utility>
 
@@ -33,6 +34,26 @@ pcl::PointCloud<pcl::PointXYZ> candidatePoints(const pcl::PointCloud<pcl::PointX
   points.reserve(candidate.indices.size());
   for (int index : candidate.indices) points.push_back(cloud[index]);
   return points;
+}
+
+// label_models' classes mapped to library indices, so that a typo in a model name is a start-up
+// error rather than a class whose objects are silently never identified.
+std::map<std::int64_t, int> labelModelIndices(const ModelLibrary& library,
+                                              const std::map<std::int64_t, std::string>& names) {
+  std::map<std::int64_t, int> indices;
+  for (const auto& [class_id, name] : names) {
+    const auto& models = library.models();
+    const auto found = std::find_if(models.begin(), models.end(),
+                                    [&](const LibraryModel& model) { return model.name == name; });
+    if (found == models.end()) {
+      std::string known;
+      for (const LibraryModel& model : models) known += (known.empty() ? "" : ", ") + model.name;
+      throw Error("label_models maps class " + std::to_string(class_id) + " to '" + name +
+                  "', which is no model of the library (" + known + ")");
+    }
+    indices[class_id] = static_cast<int>(found - models.begin());
+  }
+  return indices;
 }
 
 }  // namespace
@@ -70,6 +91,7 @@ SceneEstimator::SceneEstimator(ModelLibrary library, SceneEstimatorParameters pa
   shapes_ = std::make_unique<ShapeAlternative>(
       library_, parameters_.instance.refinement_parameters.verification,
       parameters_.identification.unknown_score);
+  label_model_index_ = labelModelIndices(library_, parameters_.label_models);
 }
 
 const ObjectInstance* SceneEstimator::instance(int id) const {
@@ -109,6 +131,26 @@ SceneUpdate SceneEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
   if (!world_from_camera.matrix().allFinite()) {
     throw Error("the camera pose given to the scene estimator is not finite");
   }
+  // A still camera's frame costs next to nothing: it is not segmented.
+  if (!cameraMoved(world_from_camera)) {
+    return update(cloud, SceneSegments{}, world_from_camera, time);
+  }
+  const Clock::time_point start = Clock::now();
+  const SceneSegments segments = segmentScene(cloud, parameters_.segmentation);
+  const double segmentation_ms = millisecondsSince(start);
+  SceneUpdate result = update(cloud, segments, world_from_camera, time);
+  result.segmentation_ms = segmentation_ms;
+  result.total_ms += segmentation_ms;
+  return result;
+}
+
+SceneUpdate SceneEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
+                                   const SceneSegments& segments,
+                                   const Eigen::Isometry3d& world_from_camera,
+                                   std::optional<double> time) {
+  if (!world_from_camera.matrix().allFinite()) {
+    throw Error("the camera pose given to the scene estimator is not finite");
+  }
   const Clock::time_point start = Clock::now();
   SceneUpdate result;
   if (!cameraMoved(world_from_camera)) {
@@ -116,8 +158,6 @@ SceneUpdate SceneEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
     result.total_ms = millisecondsSince(start);
     return result;
   }
-  const SceneSegments segments = segmentScene(cloud, parameters_.segmentation);
-  result.segmentation_ms = millisecondsSince(start);
   result.segmented = true;
   result.planes = static_cast<int>(segments.planes.size());
   last_segmented_camera_ = world_from_camera;
@@ -127,24 +167,13 @@ SceneUpdate SceneEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
 
   std::vector<FrameCandidate> candidates =
       frameCandidates(cloud, segments, world_from_camera, &result);
-  std::vector<Eigen::Vector3d> centroids, instance_centroids;
-  for (const CandidateOutcome& outcome : result.candidates)
-    centroids.push_back(outcome.centroid_world);
-  for (const ObjectInstance& instance : instances_) {
-    instance_centroids.push_back(instance.centroid_world);
-  }
-  const std::vector<int> instance_of =
-      associateCandidates(centroids, instance_centroids, parameters_.association_distance);
-  for (std::size_t c = 0; c < candidates.size(); ++c) {
-    candidates[c].instance =
-        instance_of[c] >= 0 ? instance_of[c] : explainingInstance(candidates[c]);
-  }
+  associate(candidates, result);
   updateAssignedInstances(candidates, scene, world_from_camera, time, &result);
   // The rest, largest first (segmentScene's order): new instances, parts of the instances found
   // on this frame, or unknown.
   int identifications = 0;
   for (std::size_t c = 0; c < candidates.size(); ++c) {
-    if (candidates[c].instance >= 0) continue;
+    if (candidates[c].instance >= 0 || candidates[c].ignored) continue;
     CandidateOutcome& outcome = result.candidates[c];
     const int part_of = explainingInstance(candidates[c]);
     if (part_of >= 0) {
@@ -177,14 +206,50 @@ std::vector<SceneEstimator::FrameCandidate> SceneEstimator::frameCandidates(
     for (const auto& p : frame_candidate.points) {
       frame_candidate.points_world.push_back(world_from_camera_f * p.getVector3fMap());
     }
-    candidates.push_back(std::move(frame_candidate));
     CandidateOutcome outcome;
     outcome.centroid_world = world_from_camera * candidate.centroid;
     outcome.sides = candidate.extent;
     outcome.points = candidate.pointCount();
+    restrictToClass(candidate.class_id, &frame_candidate, &outcome);
+    candidates.push_back(std::move(frame_candidate));
     result->candidates.push_back(outcome);
   }
   return candidates;
+}
+
+void SceneEstimator::restrictToClass(std::int64_t class_id, FrameCandidate* candidate,
+                                     CandidateOutcome* outcome) const {
+  // Geometric candidates have no class, and without label_models every model may be tried.
+  if (class_id < 0 || parameters_.label_models.empty()) return;
+  const auto found = label_model_index_.find(class_id);
+  if (found == label_model_index_.end()) {
+    candidate->ignored = true;
+    outcome->note = "ignored: its class " + std::to_string(class_id) + " has no label_models entry";
+    return;
+  }
+  candidate->allowed.assign(static_cast<std::size_t>(library_.size()), false);
+  candidate->allowed[static_cast<std::size_t>(found->second)] = true;
+}
+
+void SceneEstimator::associate(std::vector<FrameCandidate>& candidates,
+                               const SceneUpdate& result) const {
+  // Ignored candidates take no part: they must not take an instance's place.
+  std::vector<Eigen::Vector3d> centroids, instance_centroids;
+  std::vector<std::size_t> taking_part;
+  for (std::size_t c = 0; c < candidates.size(); ++c) {
+    if (candidates[c].ignored) continue;
+    taking_part.push_back(c);
+    centroids.push_back(result.candidates[c].centroid_world);
+  }
+  for (const ObjectInstance& instance : instances_) {
+    instance_centroids.push_back(instance.centroid_world);
+  }
+  const std::vector<int> instance_of =
+      associateCandidates(centroids, instance_centroids, parameters_.association_distance);
+  for (std::size_t k = 0; k < taking_part.size(); ++k) {
+    FrameCandidate& candidate = candidates[taking_part[k]];
+    candidate.instance = instance_of[k] >= 0 ? instance_of[k] : explainingInstance(candidate);
+  }
 }
 
 int SceneEstimator::explainingInstance(const FrameCandidate& candidate) const {
@@ -284,13 +349,17 @@ void SceneEstimator::identify(const FrameCandidate& candidate,
                               pcl::PointCloud<pcl::PointXYZ>::ConstPtr scene,
                               const Eigen::Isometry3d& world_from_camera,
                               std::optional<double> time, CandidateOutcome* outcome) {
-  Identification identification =
-      identifyCandidate(library_, parameters_.instance, candidate.points, outcome->sides,
-                        std::move(scene), world_from_camera, time, parameters_.identification,
-                        shapes_->penalties(candidate.points, candidate.up));
+  // A detector's class is the evidence against an unknown simple shape: no penalty then.
+  const std::vector<double> penalties = candidate.allowed.empty()
+                                            ? shapes_->penalties(candidate.points, candidate.up)
+                                            : std::vector<double>();
+  Identification identification = identifyCandidate(
+      library_, parameters_.instance, candidate.points, outcome->sides, std::move(scene),
+      world_from_camera, time, parameters_.identification, penalties, candidate.allowed);
   outcome->probability = identification.probability;
   if (identification.model < 0) {
     outcome->note = identification.reason;
+    if (!candidate.allowed.empty()) outcome->note += " (only its class's model was tried)";
     // Forget an older try of the same object: this one is from the newer direction.
     unknowns_.erase(
         std::remove_if(unknowns_.begin(), unknowns_.end(),

@@ -97,7 +97,8 @@ ParameterTable<EstimatorRosParameters> makeTable() {
                      {"none", SegmentationMode::kNone},
                      {"region_of_interest", SegmentationMode::kRegionOfInterest},
                      {"tabletop", SegmentationMode::kTabletop},
-                     {"scene", SegmentationMode::kScene}})
+                     {"scene", SegmentationMode::kScene},
+                     {"labels", SegmentationMode::kLabels}})
       .addPoint("roi_centre", segmentation(&S::roi_centre), "in the fixed frame")
       .add("roi_radius", segmentation(&S::roi_radius), numberAbove(0.0))
       .add("plane_distance", segmentation(&S::plane_distance), numberAbove(0.0))

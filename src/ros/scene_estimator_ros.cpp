@@ -8,6 +8,7 @@
 
 #include <boost/make_shared.hpp>
 
+#include <chrono>
 #include <exception>
 #include <sstream>
 #include <utility>
@@ -17,11 +18,16 @@
 #include "view_direction_classification/ros/bingham_conversions.h"
 #include "view_direction_classification/ros/cloud_conversions.h"
 #include "view_direction_classification/ros/geometry_conversions.h"
+#include "view_direction_classification/ros/label_image_conversion.h"
+#include "view_direction_classification/scene/label_segmentation.h"
 
 namespace vdc {
 namespace {
 
 using ObjectInstanceMsg = view_direction_classification::ObjectInstance;
+
+// Label images kept for the clouds still to come: a second of a 30 Hz detector.
+constexpr std::size_t kLabelImageCapacity = 30;
 
 ModelLibrary loadLibrary(const SceneRosParameters& parameters) {
   return ModelLibrary::load(parameters.models);
@@ -74,6 +80,8 @@ SceneEstimatorRos::SceneEstimatorRos(ros::NodeHandle node, ros::NodeHandle priva
       parameters_(readEstimatorRosParameters(private_node, private_node.hasParam("models"))),
       scene_parameters_(readSceneRosParameters(private_node, parameters_)),
       single_object_topics_(!private_node.hasParam("models")),
+      from_labels_(parameters_.core.segmentation.mode == SegmentationMode::kLabels),
+      label_images_(kLabelImageCapacity),
       estimator_(std::make_unique<SceneEstimator>(
           loadLibrary(scene_parameters_),
           withInstanceSettings(scene_parameters_.scene, parameters_.core))),
@@ -101,6 +109,12 @@ SceneEstimatorRos::SceneEstimatorRos(ros::NodeHandle node, ros::NodeHandle priva
   worker_ = std::make_unique<NewestCloudWorker>(
       [this](const sensor_msgs::PointCloud2& cloud) { processCloud(cloud); },
       [this](const std::string& reason) { skip(reason); });
+  // The label images first: a cloud's own image must not be missed because its subscription
+  // came second.
+  if (from_labels_) {
+    labels_subscriber_ = node_.subscribe("labels", static_cast<std::uint32_t>(kLabelImageCapacity),
+                                         &SceneEstimatorRos::labelsCallback, this);
+  }
   cloud_subscriber_ = node_.subscribe("cloud", 1, &SceneEstimatorRos::cloudCallback, this);
   std::string names;
   for (const LibraryModel& model : estimator_->library().models()) {
@@ -110,11 +124,17 @@ SceneEstimatorRos::SceneEstimatorRos(ros::NodeHandle node, ros::NodeHandle priva
                  "%s: a library of %d models (%s), fixed frame '%s', listening on %s",
                  private_node_.getNamespace().c_str(), estimator_->library().size(), names.c_str(),
                  parameters_.fixed_frame.c_str(), cloud_subscriber_.getTopic().c_str());
+  if (from_labels_) {
+    ROS_INFO_NAMED(private_node_.getNamespace(),
+                   "%s: object candidates from the label images on %s",
+                   private_node_.getNamespace().c_str(), labels_subscriber_.getTopic().c_str());
+  }
 }
 
 SceneEstimatorRos::~SceneEstimatorRos() {
   transforms_timer_.stop();
   cloud_subscriber_.shutdown();
+  labels_subscriber_.shutdown();
   worker_.reset();  // after the subscription: no cloud is offered to a stopped worker
 }
 
@@ -123,6 +143,65 @@ void SceneEstimatorRos::cloudCallback(const sensor_msgs::PointCloud2ConstPtr& cl
   std::lock_guard<std::mutex> lock(statistics_mutex_);
   ++received_;
   if (replaced) ++dropped_;
+}
+
+void SceneEstimatorRos::labelsCallback(const sensor_msgs::ImageConstPtr& labels) {
+  label_images_.add(labels);
+  std::lock_guard<std::mutex> lock(statistics_mutex_);
+  ++labels_received_;
+}
+
+bool SceneEstimatorRos::labelsFor(const sensor_msgs::PointCloud2& cloud, LabelImage* labels) {
+  if (cloud.height <= 1) {
+    skip("the cloud is not organised (" + std::to_string(cloud.width) + " x " +
+         std::to_string(cloud.height) + "): a label image needs an organised cloud");
+    return false;
+  }
+  const sensor_msgs::ImageConstPtr image =
+      label_images_.find(cloud.header.stamp, scene_parameters_.labels_stamp_tolerance,
+                         scene_parameters_.labels_timeout);
+  if (!image) {
+    std::ostringstream reason;
+    reason << "no label image within labels_stamp_tolerance = "
+           << scene_parameters_.labels_stamp_tolerance << " s of the cloud's stamp "
+           << cloud.header.stamp << " (waited labels_timeout = " << scene_parameters_.labels_timeout
+           << " s; " << label_images_.size() << " label image(s) buffered)";
+    skip(reason.str());
+    return false;
+  }
+  try {
+    *labels = toLabelImage(*image);
+  } catch (const Error& error) {
+    skip(error.what());
+    return false;
+  }
+  if (std::uint32_t(labels->width) != cloud.width ||
+      std::uint32_t(labels->height) != cloud.height) {
+    skip("the label image is " + std::to_string(labels->width) + " x " +
+         std::to_string(labels->height) + ", the cloud " + std::to_string(cloud.width) + " x " +
+         std::to_string(cloud.height) + ": they must be pixel-aligned");
+    return false;
+  }
+  return true;
+}
+
+SceneUpdate SceneEstimatorRos::updateEstimator(const pcl::PointCloud<pcl::PointXYZ>& cloud,
+                                               const LabelImage* labels,
+                                               const Eigen::Isometry3d& world_from_camera,
+                                               double time) {
+  if (labels == nullptr) return estimator_->update(cloud, world_from_camera, time);
+  // A still camera's frame is not segmented (the estimator would not use the segments).
+  const auto start = std::chrono::steady_clock::now();
+  SceneSegments segments;
+  if (estimator_->willSegment(world_from_camera)) {
+    segments = segmentLabels(cloud, *labels, scene_parameters_.scene.segmentation);
+  }
+  const double segmentation_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  SceneUpdate update = estimator_->update(cloud, segments, world_from_camera, time);
+  update.segmentation_ms = segmentation_ms;
+  update.total_ms += segmentation_ms;
+  return update;
 }
 
 bool SceneEstimatorRos::cameraPose(const sensor_msgs::PointCloud2& cloud,
@@ -171,8 +250,11 @@ void SceneEstimatorRos::processCloud(const sensor_msgs::PointCloud2& cloud) {
     skip(error.what());
     return;
   }
+  LabelImage labels;
+  if (from_labels_ && !labelsFor(cloud, &labels)) return;
   std::lock_guard<std::mutex> lock(estimator_mutex_);
-  const SceneUpdate update = estimator_->update(xyz, world_from_camera, cloud.header.stamp.toSec());
+  const SceneUpdate update = updateEstimator(xyz, from_labels_ ? &labels : nullptr,
+                                             world_from_camera, cloud.header.stamp.toSec());
   std::lock_guard<std::mutex> statistics_lock(statistics_mutex_);
   last_skip_reason_.clear();
   if (!update.segmented) {
@@ -360,6 +442,7 @@ void SceneEstimatorRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& st
     status.summary(diagnostic_msgs::DiagnosticStatus::OK, "Following the scene's objects.");
   }
   status.add("clouds received", received_);
+  if (from_labels_) status.add("label images received", labels_received_);
   status.add("clouds segmented", segmented_);
   status.add("clouds not segmented (the camera did not move)", still_);
   status.add("clouds dropped (a newer one arrived first)", dropped_);

@@ -3,6 +3,7 @@
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <geometry_msgs/TransformStamped.h>
 #include <ros/ros.h>
+#include <sensor_msgs/Image.h>
 #include <sensor_msgs/PointCloud2.h>
 #include <std_srvs/Trigger.h>
 #include <tf2_ros/buffer.h>
@@ -18,9 +19,11 @@
 #include <vector>
 
 #include "estimator_ros_parameters.h"
+#include "label_image_buffer.h"
 #include "newest_cloud_worker.h"
 #include "scene_ros_parameters.h"
 #include "view_direction_classification/recognition/scene_estimator.h"
+#include "view_direction_classification/scene/label_image.h"
 
 namespace vdc {
 
@@ -31,6 +34,8 @@ namespace vdc {
 // (fixed_frame -> "<model>_<n>", re-sent at ~tf_rate), ~markers with labels, serves ~reset and
 // ~reset_instance and reports diagnostics. As in OrientationEstimatorRos, the callback keeps only
 // the newest cloud and one worker thread processes it; nothing a message contains ends the node.
+// With segmentation `labels` the candidates are a detector's instance masks: each cloud takes the
+// label image (`labels`) of its stamp, and a cloud without a usable one is skipped.
 class SceneEstimatorRos {
  public:
   // Throws vdc::Error (or another std::exception) for invalid parameters or a library entry that
@@ -43,7 +48,14 @@ class SceneEstimatorRos {
 
  private:
   void cloudCallback(const sensor_msgs::PointCloud2ConstPtr& cloud);
+  void labelsCallback(const sensor_msgs::ImageConstPtr& labels);
   void processCloud(const sensor_msgs::PointCloud2& cloud);
+  // The label image of the cloud's stamp, checked against the cloud; false (skipped with the
+  // reason) when there is none or it does not fit.
+  bool labelsFor(const sensor_msgs::PointCloud2& cloud, LabelImage* labels);
+  // Called with estimator_mutex_ held: the estimator's update, from the labels when given.
+  SceneUpdate updateEstimator(const pcl::PointCloud<pcl::PointXYZ>& cloud, const LabelImage* labels,
+                              const Eigen::Isometry3d& world_from_camera, double time);
   bool cameraPose(const sensor_msgs::PointCloud2& cloud, Eigen::Isometry3d* world_from_camera);
   void publishInstances(const std_msgs::Header& cloud_header);
   void publishPrimary(const view_direction_classification::ObjectInstances& all,
@@ -61,6 +73,9 @@ class SceneEstimatorRos {
   SceneRosParameters scene_parameters_;
   // A library of one from ~model (segmentation `scene`): also ~estimate, ~pose, object_frame.
   bool single_object_topics_ = false;
+  // segmentation `labels`: the candidates come from the label images.
+  bool from_labels_ = false;
+  LabelImageBuffer label_images_;
 
   std::mutex estimator_mutex_;  // guards estimator_ and last_stamp_
   std::unique_ptr<SceneEstimator> estimator_;
@@ -76,7 +91,7 @@ class SceneEstimatorRos {
   ros::Timer transforms_timer_;
   ros::Publisher instances_publisher_, markers_publisher_, estimate_publisher_, pose_publisher_;
   ros::ServiceServer reset_server_, reset_instance_server_;
-  ros::Subscriber cloud_subscriber_;
+  ros::Subscriber cloud_subscriber_, labels_subscriber_;
   diagnostic_updater::Updater diagnostics_;
   ros::Timer diagnostics_timer_;
 
@@ -86,6 +101,7 @@ class SceneEstimatorRos {
   // Statistics for the diagnostics, guarded by statistics_mutex_.
   std::mutex statistics_mutex_;
   std::uint64_t received_ = 0, segmented_ = 0, still_ = 0, dropped_ = 0, skipped_ = 0;
+  std::uint64_t labels_received_ = 0;
   int last_candidates_ = 0, last_unknown_ = 0, instances_ = 0;
   std::string last_skip_reason_;
   double last_segmentation_ms_ = 0, last_total_ms_ = 0;

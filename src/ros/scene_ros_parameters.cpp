@@ -1,5 +1,11 @@
 #include "scene_ros_parameters.h"
 
+#include <XmlRpcValue.h>
+
+#include <cstdint>
+#include <map>
+#include <string>
+
 #include "model_library_parameter.h"
 #include "view_direction_classification/common/error.h"
 
@@ -43,8 +49,47 @@ ParameterTable<SceneRosParameters> makeTable() {
       .add("identity_unknown_score", identification(&IdentificationParameters::unknown_score),
            numberIn(-1.0, 1.0, true))
       .add("min_camera_translation", scene(&S::min_camera_translation), numberAtLeast(0.0))
-      .add("min_camera_rotation", scene(&S::min_camera_rotation), numberAtLeast(0.0));
+      .add("min_camera_rotation", scene(&S::min_camera_rotation), numberAtLeast(0.0))
+      .add("label_class_divisor", segmentation(&SceneSegmentationParameters::label_class_divisor),
+           integerAtLeast(1, "1: the label value is the class"))
+      .add("labels_stamp_tolerance", &P::labels_stamp_tolerance,
+           numberAtLeast(0.0, "0: the cloud's stamp exactly"))
+      .add("labels_timeout", &P::labels_timeout, numberAtLeast(0.0));
   return table;
+}
+
+Error labelModelsError(const std::string& got) {
+  return parameterError("label_models",
+                        "a map from a class id (a non-negative integer, quoted: '41') to a model "
+                        "name of the library",
+                        got);
+}
+
+// A class id written as a map key (XmlRpc maps have string keys): digits only.
+std::int64_t classIdOf(const std::string& key) {
+  const bool digits =
+      !key.empty() && key.size() <= 18 && key.find_first_not_of("0123456789") == std::string::npos;
+  if (!digits) throw labelModelsError("a key '" + key + "' that is no class id");
+  return std::stoll(key);
+}
+
+// ~label_models: unset is empty (every model may be any class). Whether each name is a model of
+// the library the SceneEstimator checks.
+std::map<std::int64_t, std::string> readLabelModels(const ros::NodeHandle& node) {
+  XmlRpc::XmlRpcValue value;
+  if (!node.getParam("label_models", value)) return {};
+  if (value.getType() != XmlRpc::XmlRpcValue::TypeStruct) {
+    throw labelModelsError("'" + value.toXml() + "'");
+  }
+  std::map<std::int64_t, std::string> label_models;
+  for (auto& [key, name] : value) {
+    if (name.getType() != XmlRpc::XmlRpcValue::TypeString ||
+        static_cast<std::string>(name).empty()) {
+      throw labelModelsError("an entry '" + key + "' that is not a model name");
+    }
+    label_models[classIdOf(key)] = static_cast<std::string>(name);
+  }
+  return label_models;
 }
 
 }  // namespace
@@ -57,6 +102,7 @@ const ParameterTable<SceneRosParameters>& sceneParameterTable() {
 std::vector<std::string> sceneParameterNames() {
   std::vector<std::string> names = sceneParameterTable().names();
   names.push_back("models");
+  names.push_back("label_models");
   return names;
 }
 
@@ -71,6 +117,7 @@ SceneRosParameters readSceneRosParameters(const ros::NodeHandle& node,
     p.models = {{estimator.object_id, estimator.model_path}};
   }
   sceneParameterTable().read(ParameterReader(node), p);
+  p.scene.label_models = readLabelModels(node);
   checkSceneEstimatorParameters(p.scene);
   return p;
 }

@@ -2,12 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
-#include <map>
 #include <sstream>
 #include <string>
 
 #include "candidate_shape.h"
+#include "far_points.h"
 #include "object_clusters.h"
 #include "support_planes.h"
 #include "touching_split.h"
@@ -71,20 +70,6 @@ void capClusters(std::vector<std::vector<int>>* clusters,
   }
 }
 
-// The support most of the candidate's points stand on (-1: none).
-int supportOf(const std::vector<int>& indices, const std::vector<int>& standing) {
-  std::map<int, int> votes;
-  for (const int i : indices) ++votes[standing[static_cast<std::size_t>(i)]];
-  int best = -1, most = 0;
-  for (const auto& [plane, count] : votes) {
-    if (plane >= 0 && count > most) {
-      best = plane;
-      most = count;
-    }
-  }
-  return best;
-}
-
 // The candidates of the (capped) clusters: each split into its objects, described, largest first.
 std::vector<SceneCandidate> candidatesOf(const pcl::PointCloud<pcl::PointXYZ>& cloud,
                                          const std::vector<std::vector<int>>& clusters,
@@ -106,7 +91,7 @@ std::vector<SceneCandidate> candidatesOf(const pcl::PointCloud<pcl::PointXYZ>& c
   for (std::size_t c = 0; c < objects.size(); ++c) {
     candidates[c].indices = std::move(objects[c]);
     scene::describeShape(cloud, &candidates[c]);
-    candidates[c].support = supportOf(candidates[c].indices, standing);
+    candidates[c].support = scene::supportOf(candidates[c].indices, standing);
   }
   return candidates;
 }
@@ -160,6 +145,7 @@ void checkSceneSegmentationParameters(const SceneSegmentationParameters& p) {
   require(p.max_cluster_points >= p.min_cluster_points, "max_cluster_points", p.max_cluster_points,
           "at least min_cluster_points");
   require(p.max_candidates >= 1, "max_candidates", p.max_candidates, "at least 1");
+  require(p.label_class_divisor >= 1, "label_class_divisor", p.label_class_divisor, "at least 1");
   require(positive(p.supervoxel_voxel), "supervoxel_voxel", p.supervoxel_voxel, "positive [m]");
   require(positive(p.supervoxel_seed) && p.supervoxel_seed >= p.supervoxel_voxel, "supervoxel_seed",
           p.supervoxel_seed, "finite and at least supervoxel_voxel [m]");
@@ -171,36 +157,11 @@ void checkSceneSegmentationParameters(const SceneSegmentationParameters& p) {
       "min_part_fraction", p.min_part_fraction, "in [0, 0.5]");
 }
 
-namespace {
-
-// [m] A depth camera measures metres. A finite coordinate beyond this is a corrupt point, not a
-// measurement, and it would overflow the voxel keys and the k-d trees' splits (the fuzz target
-// found it): it counts as no point.
-constexpr float kMaxCoordinate = 1000.0f;
-
-bool isFar(const pcl::PointXYZ& p) {
-  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) &&
-         p.getVector3fMap().cwiseAbs().maxCoeff() > kMaxCoordinate;
-}
-
-// The cloud with its far points made NaN: the same size and layout, so indices stay valid.
-pcl::PointCloud<pcl::PointXYZ> withoutFarPoints(const pcl::PointCloud<pcl::PointXYZ>& cloud) {
-  pcl::PointCloud<pcl::PointXYZ> measured = cloud;
-  const float nan = std::numeric_limits<float>::quiet_NaN();
-  for (auto& p : measured.points) {
-    if (isFar(p)) p.x = p.y = p.z = nan;
-  }
-  measured.is_dense = false;
-  return measured;
-}
-
-}  // namespace
-
 SceneSegments segmentScene(const pcl::PointCloud<pcl::PointXYZ>& cloud,
                            const SceneSegmentationParameters& parameters) {
   checkSceneSegmentationParameters(parameters);
-  if (std::any_of(cloud.points.begin(), cloud.points.end(), isFar)) {
-    return segmentScene(withoutFarPoints(cloud), parameters);
+  if (std::any_of(cloud.points.begin(), cloud.points.end(), scene::isFar)) {
+    return segmentScene(scene::withoutFarPoints(cloud), parameters);
   }
   SceneSegments result;
   const std::vector<int> finite = finiteIndices(cloud);

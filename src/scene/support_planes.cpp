@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 
 #include "depth_tolerance.h"
 
@@ -216,6 +217,19 @@ std::vector<int> standingOn(const pcl::PointCloud<pcl::PointXYZ>& cloud,
     standing[static_cast<std::size_t>(i)] = below;
   }
   return standing;
+}
+
+int supportOf(const std::vector<int>& indices, const std::vector<int>& standing) {
+  std::map<int, int> votes;
+  for (const int i : indices) ++votes[standing[static_cast<std::size_t>(i)]];
+  int best = -1, most = 0;
+  for (const auto& [plane, count] : votes) {
+    if (plane >= 0 && count > most) {
+      best = plane;
+      most = count;
+    }
+  }
+  return best;
 }
 
 }  // namespace vdc::scene

@@ -34,4 +34,7 @@ std::vector<int> standingOn(const pcl::PointCloud<pcl::PointXYZ>& cloud,
                             const std::vector<int>& finite, const std::vector<SupportPlane>& planes,
                             const SceneSegmentationParameters& parameters);
 
+// The support most of the candidate's points stand on (standingOn's planes), -1: none.
+int supportOf(const std::vector<int>& indices, const std::vector<int>& standing);
+
 }  // namespace vdc::scene

@@ -4,6 +4,7 @@
 
 #include <limits>
 #include <random>
+#include <utility>
 
 #include "view_direction_classification/common/error.h"
 
@@ -117,16 +118,19 @@ TEST(ObjectSegmentationTest, ModeNamesRoundTripAndUnknownOnesAreRefused) {
 namespace vdc {
 namespace {
 
-// `scene` names the scene layer (recognition/scene_estimator.h): parsed, but one object's
-// segmentation and estimator refuse it rather than guess what it means.
+// `scene` and `labels` name the scene layer (recognition/scene_estimator.h): parsed, but one
+// object's segmentation refuses them rather than guess what they mean.
 TEST(SceneSegmentationMode, IsParsedButOneObjectsSegmentationRefusesIt) {
-  EXPECT_EQ(parseSegmentationMode("scene"), SegmentationMode::kScene);
-  EXPECT_EQ(segmentationModeName(SegmentationMode::kScene), "scene");
-  SegmentationParameters parameters;
-  parameters.mode = SegmentationMode::kScene;
-  pcl::PointCloud<pcl::PointXYZ> cloud;
-  cloud.push_back(pcl::PointXYZ(0.0f, 0.0f, 1.0f));
-  EXPECT_THROW(segmentObject(cloud, parameters), Error);
+  for (const auto& [name, mode] : {std::pair{"scene", SegmentationMode::kScene},
+                                   std::pair{"labels", SegmentationMode::kLabels}}) {
+    EXPECT_EQ(parseSegmentationMode(name), mode);
+    EXPECT_EQ(segmentationModeName(mode), name);
+    SegmentationParameters parameters;
+    parameters.mode = mode;
+    pcl::PointCloud<pcl::PointXYZ> cloud;
+    cloud.push_back(pcl::PointXYZ(0.0f, 0.0f, 1.0f));
+    EXPECT_THROW(segmentObject(cloud, parameters), Error) << name;
+  }
 }
 
 }  // namespace

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdint>
 #include <random>
 #include <set>
 #include <string>
@@ -15,6 +17,7 @@
 #include "view_direction_classification/common/quaternion.h"
 #include "view_direction_classification/common/rotation_error.h"
 #include "view_direction_classification/geometry/depth_renderer.h"
+#include "view_direction_classification/scene/label_segmentation.h"
 
 namespace vdc {
 namespace {
@@ -211,6 +214,94 @@ TEST(SceneEstimatorOverSplit, AMugCutIntoPiecesIsOneInstanceWithItsPiecesAsParts
   EXPECT_EQ(estimator.instances().size(), 2u) << describe(estimator, update);
   EXPECT_NE(instanceAt(estimator, kFirstMug.translation()), nullptr);
   EXPECT_NE(instanceAt(estimator, kSecondMug.translation()), nullptr);
+}
+
+}  // namespace
+}  // namespace vdc
+
+namespace vdc {
+namespace {
+
+// A detector's label image of tableScene(): the first mug instance 1 of class 1, the second
+// instance 1 of class 2 (the Cityscapes convention, divisor 1000), everything else background.
+LabelImage labelBothMugs(const pcl::PointCloud<pcl::PointXYZ>& cloud,
+                         const Eigen::Isometry3d& world_from_camera) {
+  LabelImage labels{static_cast<int>(cloud.width), static_cast<int>(cloud.height),
+                    std::vector<std::uint32_t>(cloud.size(), 0)};
+  const double table = test::tableTop();
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    if (!std::isfinite(cloud[i].z)) continue;
+    const Eigen::Vector3d p = world_from_camera * cloud[i].getVector3fMap().cast<double>();
+    if (p.z() < table + 0.003 || p.z() > table + 0.11) continue;
+    if ((p - kFirstMug.translation()).head<2>().norm() < 0.075) labels.labels[i] = 1001;
+    if ((p - kSecondMug.translation()).head<2>().norm() < 0.075) labels.labels[i] = 2001;
+  }
+  return labels;
+}
+
+// Two models of the same mug: a candidate tried against both is either (their scores tie).
+ModelLibrary twoNamesOfTheMug() {
+  return ModelLibrary({{"mug", test::quickMugModel()}, {"cup", test::quickMugModel()}});
+}
+
+SceneUpdate updateFromLabels(SceneEstimator& estimator,
+                             const SceneEstimatorParameters& parameters) {
+  const Eigen::Isometry3d pose = worldFromCamera(kFirstView);
+  const pcl::PointCloud<pcl::PointXYZ> cloud = render(pose, 1);
+  const SceneSegments segments =
+      segmentLabels(cloud, labelBothMugs(cloud, pose), parameters.segmentation);
+  EXPECT_EQ(segments.candidates.size(), 2u) << segments.note;
+  return estimator.update(cloud, segments, pose, 0.0);
+}
+
+TEST(SceneEstimatorLabels, WithLabelModelsACandidateIsTriedOnlyAgainstItsClassModel) {
+  SceneEstimatorParameters parameters;
+  parameters.label_models = {{1, "cup"}};
+  SceneEstimator estimator(twoNamesOfTheMug(), parameters);
+  const SceneUpdate update = updateFromLabels(estimator, parameters);
+  ASSERT_TRUE(update.segmented);
+  // Class 1 (the first mug): tried against `cup` alone, so `mug` has no probability at all.
+  ASSERT_EQ(estimator.instances().size(), 1u) << describe(estimator, update);
+  const ObjectInstance& cup = estimator.instances().front();
+  EXPECT_EQ(cup.name, "cup_1");
+  EXPECT_EQ(cup.identity[0], 0.0) << "the mug model was tried";
+  EXPECT_NE(instanceAt(estimator, kFirstMug.translation()), nullptr);
+  // Class 2 (the second mug) has no entry: ignored, with the reason.
+  int ignored = 0;
+  for (const CandidateOutcome& candidate : update.candidates) {
+    if (candidate.note.find("ignored: its class 2") == std::string::npos) continue;
+    ++ignored;
+    EXPECT_EQ(candidate.instance, -1);
+  }
+  EXPECT_EQ(ignored, 1) << describe(estimator, update);
+}
+
+// The contrast: without the map both names of the mug are tried for each candidate, their
+// scores tie, neither reaches identity_min_probability (0.5), and both mugs stay unknown.
+TEST(SceneEstimatorLabels, WithoutLabelModelsEveryFittingModelIsTried) {
+  SceneEstimatorParameters parameters;
+  SceneEstimator estimator(twoNamesOfTheMug(), parameters);
+  const SceneUpdate update = updateFromLabels(estimator, parameters);
+  ASSERT_TRUE(update.segmented);
+  ASSERT_EQ(update.candidates.size(), 2u);
+  EXPECT_TRUE(estimator.instances().empty()) << describe(estimator, update);
+  for (const CandidateOutcome& candidate : update.candidates) {
+    EXPECT_EQ(candidate.note, "no model is probable enough") << describe(estimator, update);
+    EXPECT_GT(candidate.probability, 0.3) << describe(estimator, update);
+    EXPECT_LT(candidate.probability, 0.5) << describe(estimator, update);
+  }
+}
+
+TEST(SceneEstimatorLabels, ALabelModelNamingNoModelOfTheLibraryIsAStartUpError) {
+  SceneEstimatorParameters parameters;
+  parameters.label_models = {{1, "mug"}, {41, "bowl"}};
+  try {
+    SceneEstimator estimator(ModelLibrary({{"mug", test::quickMugModel()}}), parameters);
+    FAIL() << "an unknown model name was accepted";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("'bowl'"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("class 41"), std::string::npos) << error.what();
+  }
 }
 
 }  // namespace

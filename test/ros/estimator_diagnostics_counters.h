@@ -23,8 +23,11 @@ class EstimatorDiagnosticsCounters {
   static constexpr const char* kFused = "clouds fused (new views)";
   static constexpr const char* kSkipped = "clouds skipped (bad input or no tf)";
 
-  explicit EstimatorDiagnosticsCounters(ros::NodeHandle& node)
-      : subscriber_(node.subscribe("/diagnostics", 10,
+  // status: the status whose values are read ("scene estimate" for the scene layer).
+  explicit EstimatorDiagnosticsCounters(ros::NodeHandle& node,
+                                        const std::string& status = "orientation estimate")
+      : status_(status),
+        subscriber_(node.subscribe("/diagnostics", 10,
                                    &EstimatorDiagnosticsCounters::diagnosticsCallback, this)) {}
 
   // The counter's latest value, waiting up to `timeout` [s] for the first report. Empty when
@@ -36,6 +39,13 @@ class EstimatorDiagnosticsCounters {
     const auto found = counters_.find(key);
     if (found == counters_.end()) return std::nullopt;
     return found->second;
+  }
+
+  // The latest value of a key that is no counter (a reason), "" before the first report.
+  std::string text(const std::string& key) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const auto found = texts_.find(key);
+    return found == texts_.end() ? "" : found->second;
   }
 
   // Waits up to `timeout` [s] until the counter exceeds `before`; false if it did not.
@@ -52,12 +62,13 @@ class EstimatorDiagnosticsCounters {
     std::lock_guard<std::mutex> lock(mutex_);
     for (const diagnostic_msgs::DiagnosticStatus& status : array.status) {
       // diagnostic_updater names it "<node>: orientation estimate".
-      if (status.name.find("orientation estimate") == std::string::npos) continue;
+      if (status.name.find(status_) == std::string::npos) continue;
       for (const diagnostic_msgs::KeyValue& entry : status.values) {
+        texts_[entry.key] = entry.value;
         try {
           counters_[entry.key] = std::stoull(entry.value);
         } catch (const std::exception&) {
-          // Not a counter (a reason or a time): not kept.
+          // Not a counter (a reason or a time): only its text is kept.
         }
       }
     }
@@ -66,7 +77,9 @@ class EstimatorDiagnosticsCounters {
 
   std::mutex mutex_;
   std::condition_variable changed_;
+  const std::string status_;
   std::map<std::string, std::uint64_t> counters_;
+  std::map<std::string, std::string> texts_;
   ros::Subscriber subscriber_;
 };
 

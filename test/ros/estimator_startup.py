@@ -51,6 +51,20 @@ class EstimatorStartup(unittest.TestCase):
         assert_refused(self, NODE, ["~association_distance"], "_association_distance:=-1.0",
                        preset={"models": {"cup": "/nonexistent.h5"}})
 
+    def test_label_models_that_are_not_a_map_of_class_ids_are_refused_naming_the_parameter(self):
+        library = {"models": {"cup": "/nonexistent.h5"}}
+        assert_refused(self, NODE, ["~label_models", "'chair'"],
+                       preset=dict(library, label_models={"chair": "cup"}))
+        assert_refused(self, NODE, ["~label_models", "'41'"],
+                       preset=dict(library, label_models={"41": 5}))
+        assert_refused(self, NODE, ["~label_models", "a map"],
+                       preset=dict(library, label_models=["cup"]))
+
+    def test_label_models_naming_no_model_of_the_library_stop_the_node_naming_it(self):
+        model = rospy.get_param("/startup_test_model")
+        assert_refused(self, NODE, ["label_models", "class 41", "'bowl'"], "_model:=" + model,
+                       "_segmentation:=labels", preset={"label_models": {"41": "bowl"}})
+
     def test_invalid_parameter_exits_with_status_1_naming_the_parameter(self):
         code, output = run_node(NODE, "_model:=/nonexistent.h5", "_tf_timeout:=-1.0")
         self.assertEqual(code, 1, output)

@@ -201,8 +201,8 @@ const DocumentedNode<EstimatorRosParameters> kEstimator{
     sceneParameterNames()};
 // The estimator with a model library: its scene settings, documented in their own table.
 const DocumentedNode<SceneRosParameters> kScene{
-    "orientation_estimator", "estimator.yaml", sceneParameterTable(),
-    "Scene parameters",      {"models"},       estimatorParameterTable().names()};
+    "orientation_estimator", "estimator.yaml",           sceneParameterTable(),
+    "Scene parameters",      {"models", "label_models"}, estimatorParameterTable().names()};
 const DocumentedNode<InformativenessServerRosParameters> kServer{
     "informativeness_server",
     "informativeness_server.yaml",

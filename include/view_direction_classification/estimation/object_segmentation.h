@@ -23,6 +23,9 @@ enum class SegmentationMode {
   // the whole scene: the scene layer's (recognition/scene_estimator.h), which gives each
   // instance's estimator `kNone`; one OrientationEstimator refuses it.
   kScene,
+  // As kScene, with the candidates from a detector's instance label image instead of the
+  // geometric segmentation (scene/label_segmentation.h); the scene layer's too.
+  kLabels,
 };
 
 struct SegmentationParameters {

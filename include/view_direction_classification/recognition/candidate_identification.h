@@ -67,12 +67,13 @@ struct Identification {
 // segmentation `none`) fuses and refines the candidate's points, verified against `scene`
 // (occluders explain hidden parts, free space contradicts); the identity scores give the
 // probabilities, each lowered by its entry of score_penalties (per library model, empty: none;
-// ShapeAlternative). points and scene in the camera frame.
+// ShapeAlternative). points and scene in the camera frame. allowed (per library model; empty:
+// all) leaves the other models untried: a detector's class names the one model it may be.
 Identification identifyCandidate(
     const ModelLibrary& library, const EstimatorParameters& instance_parameters,
     const pcl::PointCloud<pcl::PointXYZ>& points, const Eigen::Vector3d& candidate_sides,
     pcl::PointCloud<pcl::PointXYZ>::ConstPtr scene, const Eigen::Isometry3d& world_from_camera,
     std::optional<double> time, const IdentificationParameters& parameters,
-    const std::vector<double>& score_penalties = {});
+    const std::vector<double>& score_penalties = {}, const std::vector<bool>& allowed = {});
 
 }  // namespace vdc

@@ -5,6 +5,8 @@
 
 #include <Eigen/Geometry>
 
+#include <cstdint>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -45,6 +47,11 @@ struct SceneEstimatorParameters {
   // instance that segmentation cut off (a mug's handle), not an object of its own.
   double part_tolerance = 0.01;
   double min_explained_fraction = 0.7;
+  // Candidates of a detector's label image (segmentLabels) carry the detector's class. When this
+  // maps classes to model names of the library, a candidate is identified only against its
+  // class's model, and one of a class without an entry is ignored (a detector sees chairs and
+  // people too); when empty, every model whose size fits is tried, as for geometric candidates.
+  std::map<std::int64_t, std::string> label_models;
 };
 
 // Throws vdc::Error naming the first bad parameter.
@@ -91,15 +98,26 @@ struct SceneUpdate {
 // estimator fuses its view. Instances out of view keep their beliefs.
 class SceneEstimator {
  public:
-  // Throws vdc::Error for invalid parameters (its own, the segmentation's, an instance's).
+  // Throws vdc::Error for invalid parameters (its own, the segmentation's, an instance's) and
+  // for a label_models entry naming no model of the library (naming it).
   SceneEstimator(ModelLibrary library, SceneEstimatorParameters parameters);
 
   // cloud: camera frame, organised or not, NaN allowed; world_from_camera: the camera's pose in
-  // the fixed frame; time [s]. Never throws for cloud content; throws vdc::Error for a
-  // non-finite pose.
+  // the fixed frame; time [s]. Segments the cloud (segmentScene) when the camera moved enough.
+  // Never throws for cloud content; throws vdc::Error for a non-finite pose.
   SceneUpdate update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
                      const Eigen::Isometry3d& world_from_camera,
                      std::optional<double> time = std::nullopt);
+  // The same with the cloud's segments computed by the caller (segmentLabels: a detector's
+  // masks); they are used only when the camera moved enough (willSegment).
+  SceneUpdate update(const pcl::PointCloud<pcl::PointXYZ>& cloud, const SceneSegments& segments,
+                     const Eigen::Isometry3d& world_from_camera,
+                     std::optional<double> time = std::nullopt);
+  // Whether update would segment a frame taken from this pose (the camera moved enough since
+  // the last segmented frame): a caller that segments itself need not when it would not.
+  bool willSegment(const Eigen::Isometry3d& world_from_camera) const {
+    return cameraMoved(world_from_camera);
+  }
 
   const std::vector<ObjectInstance>& instances() const { return instances_; }
   const ObjectInstance* instance(int id) const;
@@ -125,12 +143,20 @@ class SceneEstimator {
     std::vector<Eigen::Vector3f> points_world;
     Eigen::Vector3f up = Eigen::Vector3f::Zero();  // its support's normal (camera frame), if any
     int instance = -1;                             // index into instances_ once assigned
+    // The models it may be (label_models); empty: any. ignored: its class has no model.
+    std::vector<bool> allowed;
+    bool ignored = false;
   };
   bool cameraMoved(const Eigen::Isometry3d& world_from_camera) const;
   std::vector<FrameCandidate> frameCandidates(const pcl::PointCloud<pcl::PointXYZ>& cloud,
                                               const SceneSegments& segments,
                                               const Eigen::Isometry3d& world_from_camera,
                                               SceneUpdate* result) const;
+  // The models a candidate of this class may be (label_models), and whether it is ignored.
+  void restrictToClass(std::int64_t class_id, FrameCandidate* candidate,
+                       CandidateOutcome* outcome) const;
+  // Each candidate's known instance: the nearest by centroid, else the one it is a part of.
+  void associate(std::vector<FrameCandidate>& candidates, const SceneUpdate& result) const;
   // The index of the instance whose pose explains the candidate (a part of it), or -1.
   int explainingInstance(const FrameCandidate& candidate) const;
   // Each instance fuses the union of its candidates' points.
@@ -159,6 +185,7 @@ class SceneEstimator {
   std::vector<int> instances_named_;  // per model: instances named so far
   int next_id_ = 1;
   std::optional<Eigen::Isometry3d> last_segmented_camera_;
+  std::map<std::int64_t, int> label_model_index_;  // label_models' classes -> library index
 };
 
 }  // namespace vdc

@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -54,6 +55,11 @@ struct SceneSegmentationParameters {
   // A convex part with fewer than this fraction of its cluster's points stays with the part it
   // touches (a mug's handle is concave to its body but no object of its own).
   double min_part_fraction = 0.15;
+
+  // A detector's label image instead (segmentLabels, label_segmentation.h): a label value's class
+  // is value / label_class_divisor. 1000 is the Cityscapes instance images' convention (26001:
+  // instance 1 of class 26); 1 makes the value itself the class.
+  int label_class_divisor = 1000;
 };
 
 // Throws vdc::Error naming the first parameter that is out of range or not finite.
@@ -74,6 +80,8 @@ struct SceneCandidate {
   Eigen::Vector3d extent = Eigen::Vector3d::Zero();
   Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();
   int support = -1;  // index into SceneSegments::planes it stands on, -1: none found
+  // The detector's class of its label (segmentLabels), -1: geometric segmentation, no class.
+  std::int64_t class_id = -1;
   int pointCount() const { return static_cast<int>(indices.size()); }
 };
 
