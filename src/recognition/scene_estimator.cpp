@@ -172,6 +172,8 @@ SceneUpdate SceneEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
   // The rest, largest first (segmentScene's order): new instances, parts of the instances found
   // on this frame, or unknown.
   int identifications = 0;
+  identifyWholeClusters(cloud, segments, candidates, scene, world_from_camera, time,
+                        &identifications, &result);
   for (std::size_t c = 0; c < candidates.size(); ++c) {
     if (candidates[c].instance >= 0 || candidates[c].ignored) continue;
     CandidateOutcome& outcome = result.candidates[c];
@@ -345,10 +347,59 @@ bool SceneEstimator::retriedTooSoon(const CandidateOutcome& outcome,
   return false;
 }
 
+void SceneEstimator::identifyWholeClusters(const pcl::PointCloud<pcl::PointXYZ>& cloud,
+                                           const SceneSegments& segments,
+                                           std::vector<FrameCandidate>& candidates,
+                                           pcl::PointCloud<pcl::PointXYZ>::ConstPtr scene,
+                                           const Eigen::Isometry3d& world_from_camera,
+                                           std::optional<double> time, int* identifications,
+                                           SceneUpdate* result) {
+  std::map<int, std::vector<std::size_t>> pieces;  // per cluster, largest first
+  for (std::size_t c = 0; c < candidates.size(); ++c) {
+    const int cluster = segments.candidates[c].cluster;
+    if (cluster < 0 || candidates[c].instance >= 0 || candidates[c].ignored) continue;
+    if (explainingInstance(candidates[c]) >= 0) continue;  // a part: the loop after says so
+    pieces[cluster].push_back(c);
+  }
+  for (const auto& [cluster, members] : pieces) {
+    if (members.size() < 2 || *identifications >= parameters_.max_identifications) continue;
+    std::vector<const SceneCandidate*> parts;
+    for (std::size_t m : members) parts.push_back(&segments.candidates[m]);
+    SceneSegments whole;
+    whole.planes = segments.planes;
+    whole.candidates.push_back(mergedCandidate(cloud, parts));
+    SceneUpdate merged;
+    std::vector<FrameCandidate> union_candidate =
+        frameCandidates(cloud, whole, world_from_camera, &merged);
+    CandidateOutcome& outcome = merged.candidates.front();
+    if (retriedTooSoon(outcome, world_from_camera)) continue;
+    ++*identifications;
+    identify(union_candidate.front(), scene, world_from_camera, time, &outcome, false);
+    if (outcome.instance < 0) continue;
+    // The largest piece reports the new instance, the others are its parts.
+    const int index = static_cast<int>(instances_.size()) - 1;
+    for (std::size_t k = 0; k < members.size(); ++k) {
+      candidates[members[k]].instance = index;
+      CandidateOutcome& piece = result->candidates[members[k]];
+      piece.instance = outcome.instance;
+      if (k == 0) {
+        piece.new_instance = true;
+        piece.probability = outcome.probability;
+        piece.update = outcome.update;
+        piece.note =
+            "identified with the " + std::to_string(members.size() - 1) + " piece(s) it touches";
+      } else {
+        piece.note = "a part of " + instances_[index].name;
+      }
+    }
+  }
+}
+
 void SceneEstimator::identify(const FrameCandidate& candidate,
                               pcl::PointCloud<pcl::PointXYZ>::ConstPtr scene,
                               const Eigen::Isometry3d& world_from_camera,
-                              std::optional<double> time, CandidateOutcome* outcome) {
+                              std::optional<double> time, CandidateOutcome* outcome,
+                              bool remember_unknown) {
   // A detector's class is the evidence against an unknown simple shape: no penalty then.
   const std::vector<double> penalties = candidate.allowed.empty()
                                             ? shapes_->penalties(candidate.points, candidate.up)
@@ -360,6 +411,7 @@ void SceneEstimator::identify(const FrameCandidate& candidate,
   if (identification.model < 0) {
     outcome->note = identification.reason;
     if (!candidate.allowed.empty()) outcome->note += " (only its class's model was tried)";
+    if (!remember_unknown) return;
     // Forget an older try of the same object: this one is from the newer direction.
     unknowns_.erase(
         std::remove_if(unknowns_.begin(), unknowns_.end(),

@@ -75,23 +75,27 @@ std::vector<SceneCandidate> candidatesOf(const pcl::PointCloud<pcl::PointXYZ>& c
                                          const std::vector<std::vector<int>>& clusters,
                                          const std::vector<int>& standing,
                                          const SceneSegmentationParameters& parameters) {
-  std::vector<std::vector<int>> objects;
-  for (const std::vector<int>& cluster : clusters) {
+  std::vector<SceneCandidate> candidates;
+  for (std::size_t k = 0; k < clusters.size(); ++k) {
     std::vector<std::vector<int>> parts = parameters.split_touching
-                                              ? scene::splitTouching(cloud, cluster, parameters)
-                                              : std::vector<std::vector<int>>{cluster};
+                                              ? scene::splitTouching(cloud, clusters[k], parameters)
+                                              : std::vector<std::vector<int>>{clusters[k]};
     for (std::vector<int>& part : parts) {
       if (part.size() < static_cast<std::size_t>(parameters.min_cluster_points)) continue;
       std::sort(part.begin(), part.end());
-      objects.push_back(std::move(part));
+      SceneCandidate candidate;
+      candidate.indices = std::move(part);
+      candidate.cluster = static_cast<int>(k);
+      candidates.push_back(std::move(candidate));
     }
   }
-  std::sort(objects.begin(), objects.end(), largerFirst);
-  std::vector<SceneCandidate> candidates(objects.size());
-  for (std::size_t c = 0; c < objects.size(); ++c) {
-    candidates[c].indices = std::move(objects[c]);
-    scene::describeShape(cloud, &candidates[c]);
-    candidates[c].support = scene::supportOf(candidates[c].indices, standing);
+  std::sort(candidates.begin(), candidates.end(),
+            [](const SceneCandidate& a, const SceneCandidate& b) {
+              return largerFirst(a.indices, b.indices);
+            });
+  for (SceneCandidate& candidate : candidates) {
+    scene::describeShape(cloud, &candidate);
+    candidate.support = scene::supportOf(candidate.indices, standing);
   }
   return candidates;
 }
@@ -197,6 +201,23 @@ SceneSegments segmentScene(const pcl::PointCloud<pcl::PointXYZ>& cloud,
                                           : " stands on the support plane(s)");
   }
   return result;
+}
+
+SceneCandidate mergedCandidate(const pcl::PointCloud<pcl::PointXYZ>& cloud,
+                               const std::vector<const SceneCandidate*>& parts) {
+  SceneCandidate merged;
+  for (const SceneCandidate* part : parts) {
+    merged.indices.insert(merged.indices.end(), part->indices.begin(), part->indices.end());
+  }
+  std::sort(merged.indices.begin(), merged.indices.end());
+  merged.indices.erase(std::unique(merged.indices.begin(), merged.indices.end()),
+                       merged.indices.end());
+  if (merged.indices.empty()) return merged;
+  scene::describeShape(cloud, &merged);
+  merged.support = parts.front()->support;
+  merged.cluster = parts.front()->cluster;
+  merged.class_id = parts.front()->class_id;
+  return merged;
 }
 
 }  // namespace vdc

@@ -212,6 +212,12 @@ TEST(SceneEstimatorOverSplit, AMugCutIntoPiecesIsOneInstanceWithItsPiecesAsParts
   }
   ASSERT_GE(parts, 6) << "the over-split did not cut the mugs: " << describe(estimator, update);
   EXPECT_EQ(estimator.instances().size(), 2u) << describe(estimator, update);
+  // Each mug is identified from its pieces together, on the frame that cut it.
+  int whole = 0;
+  for (const CandidateOutcome& candidate : update.candidates) {
+    if (candidate.new_instance && candidate.note.rfind("identified with the", 0) == 0) ++whole;
+  }
+  EXPECT_EQ(whole, 2) << describe(estimator, update);
   EXPECT_NE(instanceAt(estimator, kFirstMug.translation()), nullptr);
   EXPECT_NE(instanceAt(estimator, kSecondMug.translation()), nullptr);
 }

@@ -204,8 +204,28 @@ TEST(SceneSegmentation, SeparatesTouchingObjectsAtTheirConcaveEdges) {
     // Without splitting they are one cluster: the scene does test the split.
     EXPECT_EQ(segmentScene(rendered.cloud, parameters).candidates.size(), 1u);
     parameters.split_touching = true;
-    expectOneCandidatePerObject(rendered, segmentScene(rendered.cloud, parameters));
+    const SceneSegments split = segmentScene(rendered.cloud, parameters);
+    expectOneCandidatePerObject(rendered, split);
+    // The two parts remember that they touch: one cluster, and together its points.
+    ASSERT_EQ(split.candidates.size(), 2u);
+    EXPECT_GE(split.candidates[0].cluster, 0);
+    EXPECT_EQ(split.candidates[0].cluster, split.candidates[1].cluster);
+    const SceneCandidate whole =
+        mergedCandidate(rendered.cloud, {&split.candidates[0], &split.candidates[1]});
+    EXPECT_EQ(whole.pointCount(),
+              split.candidates[0].pointCount() + split.candidates[1].pointCount());
+    EXPECT_TRUE(std::is_sorted(whole.indices.begin(), whole.indices.end()));
+    EXPECT_GT(whole.extent(0), split.candidates[0].extent(0));
   }
+}
+
+TEST(SceneSegmentation, ObjectsApartAreClustersOfTheirOwn) {
+  const SceneSegments segments = segmentScene(render(objectsApart(), true).cloud, {});
+  std::vector<int> clusters;
+  for (const SceneCandidate& candidate : segments.candidates) clusters.push_back(candidate.cluster);
+  std::sort(clusters.begin(), clusters.end());
+  EXPECT_EQ(std::adjacent_find(clusters.begin(), clusters.end()), clusters.end());
+  EXPECT_GE(clusters.front(), 0);
 }
 
 TEST(SceneSegmentation, AnUnorganisedCloudGivesTheSameCandidates) {

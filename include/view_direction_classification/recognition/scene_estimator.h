@@ -170,9 +170,19 @@ class SceneEstimator {
                      const Eigen::Isometry3d& world_from_camera);
   // Forgets the instances whose identity fell below drop_probability.
   void dropUnlikelyInstances(SceneUpdate* result);
+  // Segmentation splits objects at concave edges, and some objects are cut by their own (an
+  // elephant at its legs, a mug at its handle): the pieces of one cluster that no instance has
+  // are first tried together, and become one instance if a model explains them so; else each is
+  // tried alone.
+  void identifyWholeClusters(const pcl::PointCloud<pcl::PointXYZ>& cloud,
+                             const SceneSegments& segments, std::vector<FrameCandidate>& candidates,
+                             pcl::PointCloud<pcl::PointXYZ>::ConstPtr scene,
+                             const Eigen::Isometry3d& world_from_camera, std::optional<double> time,
+                             int* identifications, SceneUpdate* result);
+  // remember_unknown: an unknown outcome is remembered (retriedTooSoon) for its centroid.
   void identify(const FrameCandidate& candidate, pcl::PointCloud<pcl::PointXYZ>::ConstPtr scene,
                 const Eigen::Isometry3d& world_from_camera, std::optional<double> time,
-                CandidateOutcome* outcome);
+                CandidateOutcome* outcome, bool remember_unknown = true);
   bool retriedTooSoon(const CandidateOutcome& outcome,
                       const Eigen::Isometry3d& world_from_camera) const;
 

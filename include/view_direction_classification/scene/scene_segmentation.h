@@ -82,6 +82,9 @@ struct SceneCandidate {
   int support = -1;  // index into SceneSegments::planes it stands on, -1: none found
   // The detector's class of its label (segmentLabels), -1: geometric segmentation, no class.
   std::int64_t class_id = -1;
+  // The connected cluster it was split from (split_touching): candidates of one cluster touch.
+  // Numbered per segmentation; -1 where there are no clusters (label masks).
+  int cluster = -1;
   int pointCount() const { return static_cast<int>(indices.size()); }
 };
 
@@ -101,5 +104,11 @@ struct SceneSegments {
 // throws for the cloud's content (empty, all NaN, huge); throws vdc::Error for invalid parameters.
 SceneSegments segmentScene(const pcl::PointCloud<pcl::PointXYZ>& cloud,
                            const SceneSegmentationParameters& parameters);
+
+// The candidate that `parts` (candidates of `cloud`, at least one) make together: their indices
+// merged, described as segmentScene describes one, standing on the first part's support, of the
+// first part's cluster, with its class.
+SceneCandidate mergedCandidate(const pcl::PointCloud<pcl::PointXYZ>& cloud,
+                               const std::vector<const SceneCandidate*>& parts);
 
 }  // namespace vdc
