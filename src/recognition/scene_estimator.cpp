@@ -160,6 +160,8 @@ SceneUpdate SceneEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
   }
   result.segmented = true;
   result.planes = static_cast<int>(segments.planes.size());
+  result.dropped_clusters = segments.dropped_clusters;
+  result.segmentation_note = segments.note;
   last_segmented_camera_ = world_from_camera;
   std::vector<Eigen::Vector4d> supports;
   for (const SupportPlane& plane : segments.planes) supports.push_back(plane.coefficients);

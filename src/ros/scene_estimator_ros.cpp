@@ -273,6 +273,7 @@ void SceneEstimatorRos::processCloud(const sensor_msgs::PointCloud2& cloud) {
   }
   last_segmentation_ms_ = update.segmentation_ms;
   last_total_ms_ = update.total_ms;
+  last_segmentation_note_ = update.segmentation_note;
   publishInstances(cloud.header);
 }
 
@@ -451,6 +452,8 @@ void SceneEstimatorRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& st
   status.add("last candidates", last_candidates_);
   status.add("last candidates unknown or not tried", last_unknown_);
   status.add("last skip reason", last_skip_reason_.empty() ? "none" : last_skip_reason_);
+  status.add("last segmentation note",
+             last_segmentation_note_.empty() ? "none" : last_segmentation_note_);
   status.add("last segmentation [ms]", last_segmentation_ms_);
   status.add("last frame [ms]", last_total_ms_);
 }

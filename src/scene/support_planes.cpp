@@ -73,11 +73,41 @@ double planeWidth(const pcl::PointCloud<pcl::PointXYZ>& cloud, const std::vector
   return along[along.size() - 1 - trim] - along[trim];
 }
 
+// Regions of one plane joined, largest first: a table seen between the objects on it is several
+// regions, each narrower than a support (min_plane_width) though the table is not. Two regions
+// are one plane when their normals agree within twice plane_angle_deg and their distances from
+// the camera within the plane tolerance at that distance.
+std::vector<PlaneCandidate> coplanarJoined(std::vector<PlaneCandidate> candidates,
+                                           const SceneSegmentationParameters& parameters) {
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const PlaneCandidate& a, const PlaneCandidate& b) {
+                     return a.inliers.size() > b.inliers.size();
+                   });
+  const double min_cosine = std::cos(degToRad(2.0 * parameters.plane_angle_deg));
+  std::vector<PlaneCandidate> joined;
+  for (PlaneCandidate& candidate : candidates) {
+    const double distance = candidate.coefficients(3);  // from the camera (normal towards it)
+    const double tolerance =
+        parameters.plane_distance + parameters.depth_tolerance_growth * distance * distance;
+    auto same = std::find_if(joined.begin(), joined.end(), [&](const PlaneCandidate& plane) {
+      return plane.coefficients.head<3>().dot(candidate.coefficients.head<3>()) >= min_cosine &&
+             std::abs(plane.coefficients(3) - distance) <= tolerance;
+    });
+    if (same == joined.end()) {
+      joined.push_back(std::move(candidate));
+    } else {
+      same->inliers.insert(same->inliers.end(), candidate.inliers.begin(), candidate.inliers.end());
+    }
+  }
+  return joined;
+}
+
 // The supports among the candidates: enough inliers, wide enough, and (all but the largest)
 // parallel to the largest. Largest first.
 std::vector<SupportPlane> chooseSupports(const pcl::PointCloud<pcl::PointXYZ>& cloud,
                                          std::vector<PlaneCandidate> candidates,
                                          const SceneSegmentationParameters& parameters) {
+  candidates = coplanarJoined(std::move(candidates), parameters);
   std::stable_sort(candidates.begin(), candidates.end(),
                    [](const PlaneCandidate& a, const PlaneCandidate& b) {
                      return a.inliers.size() > b.inliers.size();

@@ -228,6 +228,24 @@ TEST(SceneSegmentation, ObjectsApartAreClustersOfTheirOwn) {
   EXPECT_GE(clusters.front(), 0);
 }
 
+TEST(SceneSegmentation, ATableSplitByALongBoxIsStillOneSupport) {
+  // A long low box across the table cuts the table's image into a strip before it and one
+  // behind it, each narrower than min_plane_width here though the table is not: joined as one
+  // plane, they are the support, and the box and the can beside it are found on it.
+  const RenderedScene rendered =
+      render({part(makeBoxMesh(Eigen::Vector3d(0.06, 1.4, 0.12)), 0.4, 0.0),
+              part(makeCylinderMesh(0.04, 0.15), 0.55, 0.2)},
+             true);
+  SceneSegmentationParameters parameters;
+  parameters.min_plane_width = 0.45;
+  const SceneSegments segments = segmentScene(rendered.cloud, parameters);
+  ASSERT_EQ(segments.planes.size(), 1u) << segments.note;
+  const Eigen::Vector3d up = rendered.camera_from_world.linear() * Eigen::Vector3d::UnitZ();
+  EXPECT_GT(segments.planes[0].coefficients.head<3>().dot(up), 0.999);
+  EXPECT_EQ(segments.dropped_clusters, 0) << segments.note;
+  EXPECT_EQ(segments.candidates.size(), 2u) << segments.note;
+}
+
 TEST(SceneSegmentation, AnUnorganisedCloudGivesTheSameCandidates) {
   for (const auto& parts : {objectsApart(), canTouchingABox()}) {
     const RenderedScene rendered = render(parts, true);

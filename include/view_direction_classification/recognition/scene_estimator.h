@@ -89,6 +89,9 @@ struct SceneUpdate {
   bool segmented = false;
   std::string skip_reason;  // why the frame was not segmented
   int planes = 0;
+  // Clusters the segmentation dropped (too large, over max_candidates) and why (SceneSegments).
+  int dropped_clusters = 0;
+  std::string segmentation_note;
   std::vector<CandidateOutcome> candidates;
   double segmentation_ms = 0, total_ms = 0;
 };
