@@ -1,10 +1,12 @@
 // libFuzzer target: the informativeness server's request handling without ROS transport
 // (InformativenessServerRequests, which the node's service servers and estimate subscriber call):
-// up to four GetHeatmap / GetNextBestView requests and estimates built from the bytes, on a real
-// model bundle. tf is replaced by fixed transforms for the frames "object" and "camera" (every
-// other frame is unknown, as tf would say). Every request must be answered: success with a
-// response of the promised shape (every candidate ranked once, best first, finite utilities; a
-// score per surface point), or failure with a message. An invalid estimate must throw vdc::Error.
+// up to four GetHeatmap / GetNextBestView requests, estimates and ~instances messages built from
+// the bytes, on a real model bundle, served alone or also as a library of two names (instances
+// of "cube", of "other" which is not loaded, or of any name; requests naming one of them,
+// "most_uncertain" or anything). tf is replaced by fixed transforms for the frames "object" and
+// "camera" (every other frame is unknown, as tf would say). Every request must be answered: success
+// with a response of the promised shape (every candidate ranked once, best first, finite utilities;
+// a score per surface point), or failure with a message. An invalid estimate must throw vdc::Error.
 //
 // The model: $VDC_FUZZ_MODEL, else the model bundle seed of the model_bundle target
 // (fuzz/corpus/model_bundle/cube_tiny.h5, a real model trained small so each input runs fast:
@@ -68,6 +70,10 @@ double coordinate(FuzzedDataProvider& data) {
   return data.ConsumeBool() ? data.ConsumeFloatingPointInRange(-2.0, 2.0) : fuzzedDouble(data);
 }
 
+std::string instanceName(FuzzedDataProvider& data) {
+  return pickString(data, {"", "cube_1", "most_uncertain"});
+}
+
 GetHeatmap::Request heatmapRequest(FuzzedDataProvider& data, int views) {
   GetHeatmap::Request request;
   request.mode = data.ConsumeBool() ? data.ConsumeIntegralInRange<std::uint8_t>(0, 3)
@@ -78,11 +84,37 @@ GetHeatmap::Request heatmapRequest(FuzzedDataProvider& data, int views) {
   request.direction.y = coordinate(data);
   request.direction.z = coordinate(data);
   request.scaling = pickString(data, {"", "median", "max"});
+  request.instance = instanceName(data);
   return request;
+}
+
+// An ~instances message: a few instances of the loaded model, of one the server lacks, or of
+// any name, with fuzzed poses, beliefs and cones; now and then in another frame.
+view_direction_classification::ObjectInstances instancesMessage(FuzzedDataProvider& data) {
+  view_direction_classification::ObjectInstances message;
+  message.header.frame_id = data.ConsumeBool() ? "world" : vdc::fuzz::fuzzedFrame(data);
+  const int count = data.ConsumeIntegralInRange(0, 4);
+  for (int i = 0; i < count; ++i) {
+    view_direction_classification::ObjectInstance instance;
+    instance.id = data.ConsumeIntegral<std::uint32_t>();
+    instance.model = pickString(data, {"cube", "other", ""});
+    instance.name = pickString(data, {"cube_1", "cube_2", "other_1"});
+    instance.identity_probability = fuzzedDouble(data);
+    instance.pose.pose.position.x = coordinate(data);
+    instance.pose.pose.position.y = coordinate(data);
+    instance.pose.pose.position.z = coordinate(data);
+    instance.pose.pose.orientation = vdc::fuzz::fuzzedQuaternionMsg(data);
+    instance.belief = vdc::fuzz::fuzzedBinghamMixtureMsg(data);
+    instance.cone90_deg =
+        data.ConsumeBool() ? data.ConsumeFloatingPointInRange(0.0, 180.0) : fuzzedDouble(data);
+    message.instances.push_back(instance);
+  }
+  return message;
 }
 
 GetNextBestView::Request nextBestViewRequest(FuzzedDataProvider& data) {
   GetNextBestView::Request request;
+  request.instance = instanceName(data);
   request.candidates.header.frame_id = vdc::fuzz::fuzzedFrame(data);
   const int candidates = data.ConsumeIntegralInRange(0, 12);
   for (int i = 0; i < candidates; ++i) {
@@ -146,11 +178,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* bytes, std::size_t siz
   FuzzedDataProvider data(bytes, size);
   vdc::InformativenessServerRosParameters parameters;
   parameters.belief_samples_per_component = data.ConsumeIntegralInRange(0, 8);
-  // A fresh server per input, so an input's outcome does not depend on the ones before it.
-  vdc::InformativenessServerRequests server(model(), parameters, lookupFixedFrom);
+  // A fresh server per input, so an input's outcome does not depend on the ones before it: the
+  // one model alone, or with a library naming it "cube".
+  vdc::ServedLibrary library;
+  if (data.ConsumeBool()) library.emplace_back("cube", model());
+  vdc::InformativenessServerRequests server(model(), parameters, lookupFixedFrom, library);
   const int views = server.scorer().viewCount();
   for (int step = 0; step < 4 && data.remaining_bytes() > 0; ++step) {
-    switch (data.ConsumeIntegralInRange(0, 2)) {
+    switch (data.ConsumeIntegralInRange(0, 3)) {
       case 0: {
         GetHeatmap::Response response;
         server.getHeatmap(heatmapRequest(data, views), response);
@@ -164,9 +199,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* bytes, std::size_t siz
         checkNextBestView(request, response);
         break;
       }
-      default:
+      case 2:
         try {
           server.receiveEstimate(vdc::fuzz::fuzzedBinghamMixtureMsg(data));
+        } catch (const vdc::Error&) {
+          // ignored with a throttled warning by the node
+        }
+        break;
+      default:
+        try {
+          server.receiveInstances(instancesMessage(data));
         } catch (const vdc::Error&) {
           // ignored with a throttled warning by the node
         }

@@ -42,16 +42,15 @@ std::map<std::int64_t, int> labelModelIndices(const ModelLibrary& library,
                                               const std::map<std::int64_t, std::string>& names) {
   std::map<std::int64_t, int> indices;
   for (const auto& [class_id, name] : names) {
-    const auto& models = library.models();
-    const auto found = std::find_if(models.begin(), models.end(),
-                                    [&](const LibraryModel& model) { return model.name == name; });
-    if (found == models.end()) {
+    const int found = library.find(name);
+    if (found < 0) {
       std::string known;
-      for (const LibraryModel& model : models) known += (known.empty() ? "" : ", ") + model.name;
+      for (const LibraryModel& model : library.models())
+        known += (known.empty() ? "" : ", ") + model.name;
       throw Error("label_models maps class " + std::to_string(class_id) + " to '" + name +
                   "', which is no model of the library (" + known + ")");
     }
-    indices[class_id] = static_cast<int>(found - models.begin());
+    indices[class_id] = found;
   }
   return indices;
 }
