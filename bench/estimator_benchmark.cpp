@@ -319,7 +319,7 @@ void timeRefinement(benchmark::State& state, const vdc::PoseRefiner& refiner, co
   const Eigen::Vector3d position = worldFromObject().translation();
   // The rendered mug alone: no scene beside it.
   vdc::RefinementView input{pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>(view.cloud),
-                            view.world_from_camera, nullptr};
+                            view.world_from_camera, vdc::SceneDepth{}};
   vdc::RefinementResult result;
   // refine() runs on this thread alone: its own CPU time is what it costs, whatever else the
   // machine runs (the wall time on a shared machine is not).

@@ -202,9 +202,10 @@ void OrientationEstimator::setParameters(EstimatorParameters parameters) {
   }
 }
 
-ViewUpdate OrientationEstimator::update(
-    const pcl::PointCloud<pcl::PointXYZ>& cloud, const Eigen::Isometry3d& world_from_camera,
-    std::optional<double> time, pcl::PointCloud<pcl::PointXYZ>::ConstPtr verification_scene) {
+ViewUpdate OrientationEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
+                                        const Eigen::Isometry3d& world_from_camera,
+                                        std::optional<double> time,
+                                        const SceneDepth& verification_scene) {
   if (!world_from_camera.matrix().allFinite()) {
     throw Error("the camera pose given to the orientation estimator is not finite");
   }
@@ -306,9 +307,10 @@ ViewUpdate OrientationEstimator::update(
   const Clock::time_point fused = Clock::now();
   result.timing.fusion = millisecondsBetween(measured, fused);
   if (refiner_) {
-    if (!verification_scene) verification_scene = verificationScene(cloud, object, segmentation);
-    refineAfterFusion(object.points, std::move(verification_scene), world_from_camera, measurement,
-                      line_of_sight, &result);
+    refineAfterFusion(object.points,
+                      verification_scene.empty() ? verificationScene(cloud, object, segmentation)
+                                                 : verification_scene,
+                      world_from_camera, measurement, line_of_sight, &result);
   }
   const Clock::time_point refined = Clock::now();
   result.timing.refinement = millisecondsBetween(fused, refined);
@@ -317,7 +319,7 @@ ViewUpdate OrientationEstimator::update(
 }
 
 void OrientationEstimator::refineAfterFusion(const pcl::PointCloud<pcl::PointXYZ>& object_points,
-                                             pcl::PointCloud<pcl::PointXYZ>::ConstPtr scene,
+                                             const SceneDepth& scene,
                                              const Eigen::Isometry3d& world_from_camera,
                                              const BinghamMixture& measurement,
                                              const Eigen::Vector4d& line_of_sight,
@@ -327,7 +329,7 @@ void OrientationEstimator::refineAfterFusion(const pcl::PointCloud<pcl::PointXYZ
   RefinementView view;
   view.points = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>(object_points);
   view.world_from_camera = world_from_camera;
-  view.scene = std::move(scene);
+  view.scene = scene;
   std::vector<RefinementView> views{view};
   views.insert(views.end(), refined_views_.begin(), refined_views_.end());
   const Eigen::Vector3d position = positionEstimate().value_or(result->observed_centroid_world);

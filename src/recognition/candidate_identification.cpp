@@ -64,9 +64,9 @@ double identityEvidence(std::optional<double> identity_score,
 Identification identifyCandidate(
     const ModelLibrary& library, const EstimatorParameters& instance_parameters,
     const pcl::PointCloud<pcl::PointXYZ>& points, const Eigen::Vector3d& candidate_sides,
-    pcl::PointCloud<pcl::PointXYZ>::ConstPtr scene, const Eigen::Isometry3d& world_from_camera,
-    std::optional<double> time, const IdentificationParameters& parameters,
-    const std::vector<double>& score_penalties, const std::vector<bool>& allowed) {
+    const SceneDepth& scene, const Eigen::Isometry3d& world_from_camera, std::optional<double> time,
+    const IdentificationParameters& parameters, const std::vector<double>& score_penalties,
+    const std::vector<bool>& allowed) {
   if (!score_penalties.empty() && static_cast<int>(score_penalties.size()) != library.size()) {
     throw Error("identification needs one score penalty per library model or none");
   }

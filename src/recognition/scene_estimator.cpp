@@ -273,7 +273,7 @@ int SceneEstimator::explainingInstance(const FrameCandidate& candidate) const {
 }
 
 void SceneEstimator::updateAssignedInstances(std::vector<FrameCandidate>& candidates,
-                                             pcl::PointCloud<pcl::PointXYZ>::ConstPtr scene,
+                                             const SceneDepth& scene,
                                              const Eigen::Isometry3d& world_from_camera,
                                              std::optional<double> time, SceneUpdate* result) {
   for (std::size_t i = 0; i < instances_.size(); ++i) {
@@ -351,7 +351,7 @@ bool SceneEstimator::retriedTooSoon(const CandidateOutcome& outcome,
 void SceneEstimator::identifyWholeClusters(const pcl::PointCloud<pcl::PointXYZ>& cloud,
                                            const SceneSegments& segments,
                                            std::vector<FrameCandidate>& candidates,
-                                           pcl::PointCloud<pcl::PointXYZ>::ConstPtr scene,
+                                           const SceneDepth& scene,
                                            const Eigen::Isometry3d& world_from_camera,
                                            std::optional<double> time, int* identifications,
                                            SceneUpdate* result) {
@@ -396,8 +396,7 @@ void SceneEstimator::identifyWholeClusters(const pcl::PointCloud<pcl::PointXYZ>&
   }
 }
 
-void SceneEstimator::identify(const FrameCandidate& candidate,
-                              pcl::PointCloud<pcl::PointXYZ>::ConstPtr scene,
+void SceneEstimator::identify(const FrameCandidate& candidate, const SceneDepth& scene,
                               const Eigen::Isometry3d& world_from_camera,
                               std::optional<double> time, CandidateOutcome* outcome,
                               bool remember_unknown) {

@@ -35,6 +35,13 @@ Cloud::Ptr strided(const Cloud& points) {
   return result;
 }
 
+// Marks point i explained at residual `distance`: level 2 within half of `tolerance`, 1 up to it
+// (a point keeps the better level of the parts that explain it).
+void explain(std::size_t i, float distance, double tolerance, std::vector<char>* explained) {
+  const char level = distance <= 0.5 * tolerance ? 2 : (distance <= tolerance ? 1 : 0);
+  (*explained)[i] = std::max((*explained)[i], level);
+}
+
 // RANSAC for one plane of `model` type about `axis` (PCL: PARALLEL_PLANE contains the axis,
 // PERPENDICULAR_PLANE is normal to it) among the points not yet explained. Marks its inliers
 // explained; returns the plane's unit normal (zero when none was found).
@@ -58,14 +65,22 @@ Eigen::Vector3f explainByPlane(const Cloud::Ptr& cloud, int model, const Eigen::
   pcl::ModelCoefficients coefficients;
   ransac.segment(inliers, coefficients);
   if (inliers.indices.empty() || coefficients.values.size() < 4) return Eigen::Vector3f::Zero();
-  for (int i : inliers.indices) (*explained)[i] = 1;
-  return Eigen::Vector3f(coefficients.values[0], coefficients.values[1], coefficients.values[2])
-      .normalized();
+  const Eigen::Vector4f plane(coefficients.values[0], coefficients.values[1],
+                              coefficients.values[2], coefficients.values[3]);
+  const float norm = plane.head<3>().norm();
+  for (int i : inliers.indices) {
+    const float distance = std::abs(plane.head<3>().dot((*cloud)[i].getVector3fMap()) + plane[3]);
+    explain(i, distance / norm, tolerance, explained);
+  }
+  return plane.head<3>() / norm;
 }
 
+// The explained share, weighted as the verifier weighs a model's inliers
+// (VerificationScore::identityScore): 1 within half the tolerance, 1/2 up to it.
 double fractionOf(const std::vector<char>& explained) {
-  return static_cast<double>(std::count(explained.begin(), explained.end(), 1)) /
-         static_cast<double>(explained.size());
+  double total = 0.0;
+  for (char level : explained) total += level;
+  return total / (2.0 * static_cast<double>(explained.size()));
 }
 
 // The points within `tolerance` of the highest (along `up`) become explained: a closed shape's
@@ -78,9 +93,16 @@ void explainTop(const Cloud& cloud, const Eigen::Vector3f& up, double tolerance,
   std::vector<float> sorted = heights;
   const std::size_t k = (sorted.size() * 98) / 100;
   std::nth_element(sorted.begin(), sorted.begin() + k, sorted.end());
-  const float top = sorted[k];
+  // The lid's level: the median of the heights near that percentile, which lies about two noise
+  // sigmas above it.
+  std::vector<float> near_top;
+  for (float h : heights) {
+    if (std::abs(h - sorted[k]) <= tolerance) near_top.push_back(h);
+  }
+  std::nth_element(near_top.begin(), near_top.begin() + near_top.size() / 2, near_top.end());
+  const float top = near_top[near_top.size() / 2];
   for (std::size_t i = 0; i < heights.size(); ++i) {
-    if (std::abs(heights[i] - top) <= tolerance) (*explained)[i] = 1;
+    explain(i, std::abs(heights[i] - top), tolerance, explained);
   }
 }
 
@@ -101,13 +123,20 @@ double boxFraction(const Cloud::Ptr& cloud, const Eigen::Vector3f& up, double to
 // An upright cylinder's side (a circle in the plane square to `up`, PCL's 2D circle RANSAC) and
 // a horizontal top.
 double cylinderFraction(const Cloud::Ptr& cloud, const Eigen::Vector3f& up, double tolerance) {
+  // The top first, and the circle fitted to the rest: seen from above, a lid's many points inside
+  // the circle would draw RANSAC to a smaller circle through them.
+  std::vector<char> explained(cloud->size(), 0);
+  explainTop(*cloud, up, tolerance, &explained);
   const Eigen::Vector3f u = up.unitOrthogonal();
   const Eigen::Vector3f v = up.cross(u);
   auto flat = pcl::make_shared<Cloud>();
-  for (const auto& p : cloud->points) {
-    flat->push_back(pcl::PointXYZ(u.dot(p.getVector3fMap()), v.dot(p.getVector3fMap()), 0.0f));
+  auto side = pcl::make_shared<pcl::Indices>();
+  for (std::size_t i = 0; i < cloud->size(); ++i) {
+    const Eigen::Vector3f p = (*cloud)[i].getVector3fMap();
+    flat->push_back(pcl::PointXYZ(u.dot(p), v.dot(p), 0.0f));
+    if (!explained[i]) side->push_back(static_cast<int>(i));
   }
-  std::vector<char> explained(cloud->size(), 0);
+  if (side->size() < 3) return fractionOf(explained);
   pcl::SACSegmentation<pcl::PointXYZ> ransac;
   ransac.setModelType(pcl::SACMODEL_CIRCLE2D);
   ransac.setMethodType(pcl::SAC_RANSAC);
@@ -115,6 +144,7 @@ double cylinderFraction(const Cloud::Ptr& cloud, const Eigen::Vector3f& up, doub
   ransac.setMaxIterations(kRansacIterations);
   ransac.setRadiusLimits(0.005, 0.5);
   ransac.setInputCloud(flat);
+  ransac.setIndices(side);
   pcl::PointIndices inliers;
   pcl::ModelCoefficients coefficients;
   ransac.segment(inliers, coefficients);
@@ -122,13 +152,15 @@ double cylinderFraction(const Cloud::Ptr& cloud, const Eigen::Vector3f& up, doub
     // Only the side's half that faces the camera (at the origin of the points' frame): what is
     // seen beyond the axis through an open top (a mug's inner wall) is no closed can's side.
     const Eigen::Vector2f centre(coefficients.values[0], coefficients.values[1]);
+    const float radius = coefficients.values[2];
     for (int i : inliers.indices) {
       const Eigen::Vector2f outward = (*flat)[i].getVector3fMap().head<2>() - centre;
       const Eigen::Vector2f towards_camera = -(*flat)[i].getVector3fMap().head<2>();
-      if (outward.dot(towards_camera) > 0.0f) explained[i] = 1;
+      if (outward.dot(towards_camera) > 0.0f) {
+        explain(i, std::abs(outward.norm() - radius), tolerance, &explained);
+      }
     }
   }
-  explainTop(*cloud, up, tolerance, &explained);
   return fractionOf(explained);
 }
 

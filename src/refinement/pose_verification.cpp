@@ -86,7 +86,8 @@ std::unique_ptr<PoseVerifier::IndexedView> PoseVerifier::indexView(
   indexed->object = {points, rayIndexOf(*points)};
   indexed->footprint = convexHull(std::move(flat));
   indexed->camera_from_world = view.world_from_camera.inverse();
-  if (view.scene) indexed->scene = indexScene(*view.scene, *points);
+  if (view.scene.occluders) indexed->scene = indexScene(*view.scene.occluders, *points);
+  if (view.scene.supports) indexed->supports = indexScene(*view.scene.supports, *points);
   return indexed;
 }
 
@@ -131,16 +132,17 @@ VerificationScore PoseVerifier::score(const Eigen::Isometry3d& world_from_object
   if (result.observed > 0) {
     result.inlier_fraction = double(counts.inliers) / result.observed;
     result.facing_inlier_fraction = double(counts.facing_inliers) / result.observed;
+    result.facing_close_fraction = double(counts.facing_close) / result.observed;
   }
   if (result.predicted > 0)
     result.violation_fraction = double(counts.violations) / result.predicted;
   return result;
 }
 
-int PoseVerifier::facingRematches(const std::vector<Eigen::Vector3f>& matched,
-                                  const std::vector<float>& z,
-                                  const Eigen::Vector3f& camera) const {
-  if (matched.empty()) return 0;
+void PoseVerifier::countFacingRematches(const std::vector<Eigen::Vector3f>& matched,
+                                        const std::vector<float>& z, const Eigen::Vector3f& camera,
+                                        Counts* counts) const {
+  if (matched.empty()) return;
   std::vector<Eigen::Vector3f> towards_camera;
   towards_camera.reserve(matched.size());
   for (const Eigen::Vector3f& q : matched) towards_camera.push_back((camera - q).normalized());
@@ -149,14 +151,15 @@ int PoseVerifier::facingRematches(const std::vector<Eigen::Vector3f>& matched,
   std::vector<float> squared;
   surface_->nearest().search(matched, &index, &squared, neighbour_radius_, &facing);
   const auto& model = *surface_->cloud();
-  int explained = 0;
   for (std::size_t i = 0; i < matched.size(); ++i) {
     if (index[i] < 0) continue;
     const auto& sample = model[index[i]];
     const float offset = sample.getNormalVector3fMap().dot(matched[i] - sample.getVector3fMap());
-    if (std::abs(offset) <= inlierTolerance(z[i])) ++explained;
+    const double tolerance = inlierTolerance(z[i]);
+    if (std::abs(offset) > tolerance) continue;
+    ++counts->facing_inliers;
+    if (std::abs(offset) <= 0.5 * tolerance) ++counts->facing_close;
   }
-  return explained;
 }
 
 void PoseVerifier::addViewScore(const IndexedView& view, const Eigen::Isometry3d& world_from_object,
@@ -186,18 +189,20 @@ void PoseVerifier::addViewScore(const IndexedView& view, const Eigen::Isometry3d
     if (index[i] < 0 || squared[i] > radius_sq) continue;
     const auto& sample = model[index[i]];
     const float offset = sample.getNormalVector3fMap().dot(queries[i] - sample.getVector3fMap());
-    if (std::abs(offset) > inlierTolerance(observed[i].z)) continue;
+    const double tolerance = inlierTolerance(observed[i].z);
+    if (std::abs(offset) > tolerance) continue;
     ++counts->inliers;
     const Eigen::Vector3f towards_camera = camera - queries[i];
     if (sample.getNormalVector3fMap().dot(towards_camera) >=
         kMinObservedFacingCosine * towards_camera.norm()) {
       ++counts->facing_inliers;
+      if (std::abs(offset) <= 0.5 * tolerance) ++counts->facing_close;
     } else {
       facing_away.push_back(queries[i]);
       facing_away_z.push_back(observed[i].z);
     }
   }
-  counts->facing_inliers += facingRematches(facing_away, facing_away_z, camera);
+  countFacingRematches(facing_away, facing_away_z, camera, counts);
 
   // The predicted half: is each camera-facing sample where the camera saw a surface?
   const Eigen::Isometry3f transform = camera_from_object.cast<float>();
@@ -217,12 +222,26 @@ void PoseVerifier::addViewScore(const IndexedView& view, const Eigen::Isometry3d
   // Against the scene's depth where it is given, else against the object's points.
   const RayIndex& seen = view.scene.rays ? view.scene : view.object;
   seen.rays->search(rays, &index, &squared, neighbour_radius_ / nearest_z);
+  std::vector<int> support_index;
+  std::vector<float> support_squared;
+  if (view.supports.rays) {
+    view.supports.rays->search(rays, &support_index, &support_squared,
+                               neighbour_radius_ / nearest_z);
+  }
   for (std::size_t i = 0; i < predicted.size(); ++i) {
     const float ray_radius = static_cast<float>(neighbour_radius_) / predicted[i].z();
     if (index[i] < 0 || squared[i] > ray_radius * ray_radius) {
-      // Nothing seen on this ray (no return, or a scene point left out such as the table): a
-      // contradiction inside the object's footprint; outside it hidden or cropped away, for all
-      // we know.
+      if (!support_index.empty() && support_index[i] >= 0 &&
+          support_squared[i] <= ray_radius * ray_radius) {
+        // The ray meets the table: the sample must lie on it.
+        const float support_z = (*view.supports.points)[support_index[i]].z;
+        if (std::abs(predicted[i].z() - support_z) > freeSpaceTolerance(support_z)) {
+          ++counts->violations;
+        }
+        continue;
+      }
+      // Nothing seen on this ray (no return, or a point left out of the scene): a contradiction
+      // inside the object's footprint; outside it hidden or cropped away, for all we know.
       if (parameters_.judge_only_within_footprint &&
           !insideConvexPolygon(view.footprint, rays[i].head<2>(), ray_radius)) {
         --score->predicted;

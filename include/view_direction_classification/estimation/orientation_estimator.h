@@ -179,11 +179,11 @@ class OrientationEstimator {
   // skipped with a reason. Throws vdc::Error for a non-finite pose.
   // verification_scene: what else the camera saw (camera frame), when `cloud` is already the
   // object (segmentation `none`, e.g. one candidate of a scene): refinement verifies against it
-  // (RefinementView::scene). Null: the scene segmentation leaves (verificationScene).
+  // (RefinementView::scene). Empty: the scene segmentation leaves (verificationScene).
   ViewUpdate update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
                     const Eigen::Isometry3d& world_from_camera,
                     std::optional<double> time = std::nullopt,
-                    pcl::PointCloud<pcl::PointXYZ>::ConstPtr verification_scene = nullptr);
+                    const SceneDepth& verification_scene = {});
   // Back to the uniform prior (forgets the fused views, the position and the track too).
   void reset();
   // New settings for the frames to come (a live reconfigure): checked as the constructor checks
@@ -236,8 +236,7 @@ class OrientationEstimator {
   // line_of_sight: q_CL, the camera frame's turn onto the ray to the object.
   // `scene`: what else the camera saw (verificationScene; null: the object's points alone).
   void refineAfterFusion(const pcl::PointCloud<pcl::PointXYZ>& object_points,
-                         pcl::PointCloud<pcl::PointXYZ>::ConstPtr scene,
-                         const Eigen::Isometry3d& world_from_camera,
+                         const SceneDepth& scene, const Eigen::Isometry3d& world_from_camera,
                          const BinghamMixture& measurement, const Eigen::Vector4d& line_of_sight,
                          ViewUpdate* result);
   // Keeps `view` (thinned) among the latest check_views and, where the belief's best pose

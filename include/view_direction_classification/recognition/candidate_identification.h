@@ -72,8 +72,8 @@ struct Identification {
 Identification identifyCandidate(
     const ModelLibrary& library, const EstimatorParameters& instance_parameters,
     const pcl::PointCloud<pcl::PointXYZ>& points, const Eigen::Vector3d& candidate_sides,
-    pcl::PointCloud<pcl::PointXYZ>::ConstPtr scene, const Eigen::Isometry3d& world_from_camera,
-    std::optional<double> time, const IdentificationParameters& parameters,
-    const std::vector<double>& score_penalties = {}, const std::vector<bool>& allowed = {});
+    const SceneDepth& scene, const Eigen::Isometry3d& world_from_camera, std::optional<double> time,
+    const IdentificationParameters& parameters, const std::vector<double>& score_penalties = {},
+    const std::vector<bool>& allowed = {});
 
 }  // namespace vdc

@@ -163,8 +163,7 @@ class SceneEstimator {
   // The index of the instance whose pose explains the candidate (a part of it), or -1.
   int explainingInstance(const FrameCandidate& candidate) const;
   // Each instance fuses the union of its candidates' points.
-  void updateAssignedInstances(std::vector<FrameCandidate>& candidates,
-                               pcl::PointCloud<pcl::PointXYZ>::ConstPtr scene,
+  void updateAssignedInstances(std::vector<FrameCandidate>& candidates, const SceneDepth& scene,
                                const Eigen::Isometry3d& world_from_camera,
                                std::optional<double> time, SceneUpdate* result);
   // Adds a fused view's evidence to the instance's identity (identityEvidence).
@@ -179,11 +178,10 @@ class SceneEstimator {
   // tried alone.
   void identifyWholeClusters(const pcl::PointCloud<pcl::PointXYZ>& cloud,
                              const SceneSegments& segments, std::vector<FrameCandidate>& candidates,
-                             pcl::PointCloud<pcl::PointXYZ>::ConstPtr scene,
-                             const Eigen::Isometry3d& world_from_camera, std::optional<double> time,
-                             int* identifications, SceneUpdate* result);
+                             const SceneDepth& scene, const Eigen::Isometry3d& world_from_camera,
+                             std::optional<double> time, int* identifications, SceneUpdate* result);
   // remember_unknown: an unknown outcome is remembered (retriedTooSoon) for its centroid.
-  void identify(const FrameCandidate& candidate, pcl::PointCloud<pcl::PointXYZ>::ConstPtr scene,
+  void identify(const FrameCandidate& candidate, const SceneDepth& scene,
                 const Eigen::Isometry3d& world_from_camera, std::optional<double> time,
                 CandidateOutcome* outcome, bool remember_unknown = true);
   bool retriedTooSoon(const CandidateOutcome& outcome,

@@ -19,9 +19,10 @@ namespace vdc {
 // does not explain it better is no evidence. Models that are themselves simple shapes (a carton,
 // a can: isSimpleShape) are exempt, their size is their evidence.
 
-// Of `points` (any frame), the fraction within `tolerance` [m] of the better of two simple shapes
-// standing upright on a support whose unit normal (same frame) is `up`: a box (up to two
-// perpendicular upright faces and a horizontal top) or an upright cylinder (its side and a
+// Of `points` (any frame), the share explained within `tolerance` [m] (weighted as the verifier
+// weighs a model's inliers: 1 within half the tolerance, 1/2 up to it) by the better of two
+// simple shapes standing upright on a support whose unit normal (same frame) is `up`: a box (up to
+// two perpendicular upright faces and a horizontal top) or an upright cylinder (its side and a
 // horizontal top). PCL's RANSAC (fixed seed: deterministic) on at most 2000 evenly strided points;
 // 0 for fewer than 30 points or a non-finite `up`.
 double simpleShapeFraction(const pcl::PointCloud<pcl::PointXYZ>& points, const Eigen::Vector3f& up,

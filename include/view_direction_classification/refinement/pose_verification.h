@@ -13,18 +13,31 @@
 
 namespace vdc {
 
+// What the camera saw besides the object, for verification (camera frame; NaN and points behind
+// the camera are ignored).
+struct SceneDepth {
+  // The points off the supports, the object's own among them: what can hide the object. A
+  // predicted sample behind one is hidden by it (an occluder explains it), a sample in front of
+  // one is a surface the camera saw through. So an object partly hidden by another keeps its
+  // right pose.
+  pcl::PointCloud<pcl::PointXYZ>::ConstPtr occluders;
+  // The points of the surfaces the objects stand on (the table). Nothing stands hidden under a
+  // table, so a predicted sample on a ray that meets one must lie at its depth: in front of it is
+  // free space (a mug's handle over the table where the camera saw the table), behind it is sunk
+  // into the table.
+  pcl::PointCloud<pcl::PointXYZ>::ConstPtr supports;
+  bool empty() const { return !occluders && !supports; }
+};
+
 // One observation of the object: its points in the camera frame (finite; the segmented object)
 // and where the camera was in the fixed frame.
 struct RefinementView {
   pcl::PointCloud<pcl::PointXYZ>::ConstPtr points;
   Eigen::Isometry3d world_from_camera = Eigen::Isometry3d::Identity();
-  // Optional: the whole scene the camera saw (camera frame, the object's points among the rest;
-  // NaN and points behind the camera are ignored). When given, the model's predicted surface is
-  // judged against the scene's depth rather than the object's points alone: a sample behind a
-  // scene point is hidden by it (an occluder explains it), a sample in front of one is a surface
-  // the camera saw through; on a ray without a scene point the footprint rule below applies, as
-  // without a scene. So an object partly hidden by another keeps its right pose.
-  pcl::PointCloud<pcl::PointXYZ>::ConstPtr scene;
+  // Optional: the scene around the object. When given, the model's predicted surface is judged
+  // against the scene's depth rather than the object's points alone; on a ray that meets no scene
+  // point the footprint rule below applies, as without a scene.
+  SceneDepth scene;
 };
 
 struct VerificationParameters {
@@ -66,6 +79,11 @@ struct VerificationScore {
   // inside explain the front of a slightly narrower can; refinement keeps that leniency (its
   // coarse ICP may settle a wall's thickness off before the polish), identification does not.
   double facing_inlier_fraction = 0.0;
+  // Of those, the ones within half the inlier tolerance. A model a few millimetres off the true
+  // shape (a mug on a slightly narrower can) still explains nearly every point within the
+  // tolerance, which must allow for depth noise, but far fewer within half of it; the true shape
+  // explains nearly as many there, since the tolerance is at least two noise sigmas.
+  double facing_close_fraction = 0.0;
   // Predicted samples the observation contradicts: in front of the observed surface (the camera
   // saw through them), or where nothing was observed at all (the object's points are segmented,
   // so a prediction outside them is a surface that is not there). Samples behind the observed
@@ -76,8 +94,12 @@ struct VerificationScore {
   // the points with a model part sticking out into free space is as wrong as one that leaves
   // points unexplained.
   double score() const { return inlier_fraction - violation_fraction; }
-  // The same with facing inliers: how well the model, and no other object, explains the view.
-  double identityScore() const { return facing_inlier_fraction - violation_fraction; }
+  // How well the model, and no other object, explains the view: facing inliers weighted by their
+  // residual (1 within half the tolerance, 1/2 up to it), a coarse residual likelihood, minus the
+  // contradicted predictions. The simple-shape alternative (shape_alternative.h) is weighed alike.
+  double identityScore() const {
+    return 0.5 * (facing_inlier_fraction + facing_close_fraction) - violation_fraction;
+  }
 };
 
 // Scores poses of the model against a fixed set of views. Building one indexes each view's
@@ -100,7 +122,7 @@ class PoseVerifier {
   struct IndexedView {
     RayIndex object;
     // The scene's points near the object's rays (empty: verified against the object alone).
-    RayIndex scene;
+    RayIndex scene, supports;
     Eigen::Isometry3d camera_from_world;
     std::vector<Eigen::Vector2f> footprint;  // convex hull of the object's rays, counter-clockwise
   };
@@ -109,14 +131,16 @@ class PoseVerifier {
                       const pcl::PointCloud<pcl::PointXYZ>& object) const;
   // Counts of one pose over the views.
   struct Counts {
-    int inliers = 0, facing_inliers = 0, violations = 0;
+    int inliers = 0, facing_inliers = 0, facing_close = 0, violations = 0;
   };
   void addViewScore(const IndexedView& view, const Eigen::Isometry3d& world_from_object,
                     Counts* counts, VerificationScore* score) const;
   // Of the inliers `matched` (object frame, each matched to `index`'s sample) whose sample faces
-  // away from the camera at `camera` (object frame): how many a sample facing it explains.
-  int facingRematches(const std::vector<Eigen::Vector3f>& matched, const std::vector<float>& z,
-                      const Eigen::Vector3f& camera) const;
+  // away from the camera at `camera` (object frame): the ones a sample facing it explains,
+  // counted into counts->facing_inliers and (within half the tolerance) counts->facing_close.
+  void countFacingRematches(const std::vector<Eigen::Vector3f>& matched,
+                            const std::vector<float>& z, const Eigen::Vector3f& camera,
+                            Counts* counts) const;
 
   std::shared_ptr<const ModelSurface> surface_;
   std::vector<std::unique_ptr<IndexedView>> views_;
