@@ -4,6 +4,7 @@
 #include "view_direction_classification/bingham/bingham_normalizer.h"
 #include "view_direction_classification/bingham/bingham_sampler.h"
 #include "view_direction_classification/common/error.h"
+#include "view_direction_classification/common/parallel_for.h"
 #include "view_direction_classification/common/quaternion.h"
 
 #include <Eigen/Eigenvalues>
@@ -290,9 +291,8 @@ BinghamMixture multiply(const BinghamMixture& a, const BinghamMixture& b,
     // log w_ij = log w_i + log w_j + lambda_max + log F(Z_ij) - log F_i - log F_j, with F(Z_ij)
     // bounded without quadrature: far tighter than F(0) = 2 pi^2 for the concentrated products of
     // a converging filter, where most pairs then need no normaliser at all.
-#pragma omp parallel for schedule(static)
-    for (std::ptrdiff_t k = 0; k < n; ++k) {
-      Pair& pair = pairs[static_cast<std::size_t>(k)];
+    parallelFor(pairs.size(), hardwareThreads(), [&](int, std::size_t k) {
+      Pair& pair = pairs[k];
       const BinghamDistribution& p = a.component(pair.i);
       const BinghamDistribution& q = b.component(pair.j);
       const Eigen::Matrix4d sum = p.exponentMatrix() + q.exponentMatrix();
@@ -303,7 +303,7 @@ BinghamMixture multiply(const BinghamMixture& a, const BinghamMixture& b,
       pair.log_weight_bound = std::log(a.weight(pair.i)) + std::log(b.weight(pair.j)) +
                               eigenvalues(3) + log_normalizer_bound - p.logNormalizer() -
                               q.logNormalizer();
-    }
+    });
   }
   // The exact weight of the pair with the highest bound is a lower bound on the heaviest weight:
   // every pair whose bound falls below it times the floor can be skipped.
@@ -325,15 +325,13 @@ BinghamMixture multiply(const BinghamMixture& a, const BinghamMixture& b,
   }
   std::vector<double> log_weights(kept.size());
   std::vector<BinghamDistribution> components(kept.size());
-#pragma omp parallel for schedule(dynamic, 16)
-  for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t>(kept.size()); ++k) {
-    const Pair& pair = kept[static_cast<std::size_t>(k)];
+  parallelFor(kept.size(), hardwareThreads(), [&](int, std::size_t k) {
+    const Pair& pair = kept[k];
     BinghamProduct product =
         multiplyKeepingSharpFactor(a.component(pair.i), b.component(pair.j), sharpness_ratio);
-    log_weights[static_cast<std::size_t>(k)] =
-        std::log(a.weight(pair.i)) + std::log(b.weight(pair.j)) + product.log_scale;
-    components[static_cast<std::size_t>(k)] = std::move(product.distribution);
-  }
+    log_weights[k] = std::log(a.weight(pair.i)) + std::log(b.weight(pair.j)) + product.log_scale;
+    components[k] = std::move(product.distribution);
+  });
   if (relative_weight_floor > 0.0) {
     // Exact weights known: drop what the bound let through but the floor does not.
     const double heaviest = *std::max_element(log_weights.begin(), log_weights.end());
@@ -360,19 +358,10 @@ BinghamMixture reduce(const BinghamMixture& mixture, const MixtureReductionOptio
   // update, so clusters are merged in parallel.
   std::vector<double> weights(kept.size());
   std::vector<BinghamDistribution> components(kept.size());
-  std::exception_ptr failure;  // an exception must not leave an OpenMP region
-#pragma omp parallel for schedule(dynamic, 1)
-  for (std::ptrdiff_t n = 0; n < static_cast<std::ptrdiff_t>(kept.size()); ++n) {
-    const auto i = static_cast<std::size_t>(n);
-    try {
-      components[i] = mergeCluster(mixture, *kept[i]);
-      weights[i] = kept[i]->weight;
-    } catch (...) {
-#pragma omp critical(vdc_reduce_failure)
-      if (!failure) failure = std::current_exception();
-    }
-  }
-  if (failure) std::rethrow_exception(failure);
+  parallelFor(kept.size(), hardwareThreads(), [&](int, std::size_t i) {
+    components[i] = mergeCluster(mixture, *kept[i]);
+    weights[i] = kept[i]->weight;
+  });
   return BinghamMixture(std::move(weights), std::move(components));
 }
 
@@ -406,9 +395,8 @@ Eigen::Vector4d mapEstimate(const BinghamMixture& mixture, const MapOptions& opt
   // Each start climbs on its own: both cores share the starts; the best of each start's end
   // points is kept, ties going to the earlier start, so the result does not depend on threads.
   std::vector<Start> ends(starts.size());
-#pragma omp parallel for schedule(dynamic, 1)
-  for (std::ptrdiff_t s = 0; s < static_cast<std::ptrdiff_t>(starts.size()); ++s) {
-    const Start start = starts[static_cast<std::size_t>(s)];
+  parallelFor(starts.size(), hardwareThreads(), [&](int, std::size_t s) {
+    const Start start = starts[s];
     Eigen::Vector4d x = start.x;
     double value = start.value;
     double step = -1.0;  // set from the gradient's scale on the first iteration
@@ -436,8 +424,8 @@ Eigen::Vector4d mapEstimate(const BinghamMixture& mixture, const MapOptions& opt
       if (!moved) break;
       step *= 2.0;  // let the step grow again after a success
     }
-    ends[static_cast<std::size_t>(s)] = {x, value};
-  }
+    ends[s] = {x, value};
+  });
   Start best = starts.front();
   for (const Start& end : ends) {
     if (end.value > best.value) best = end;

@@ -67,7 +67,10 @@ SceneDepth verificationScene(const pcl::PointCloud<pcl::PointXYZ>& cloud,
       on_supports->push_back(p);
     }
   }
-  return {occluders, on_supports};
+  SceneDepth scene;
+  scene.occluders = occluders;
+  scene.supports = on_supports;
+  return scene;
 }
 
 }  // namespace vdc

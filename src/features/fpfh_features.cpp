@@ -1,6 +1,6 @@
 #include "view_direction_classification/features/fpfh_features.h"
 
-#include <pcl/features/normal_3d_omp.h>
+#include <pcl/features/normal_3d.h>
 #include <pcl/features/pfh_tools.h>
 #include <pcl/filters/voxel_grid.h>
 #include <pcl/search/kdtree.h>
@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "view_direction_classification/common/error.h"
+#include "view_direction_classification/common/parallel_for.h"
 
 namespace vdc {
 namespace {
@@ -83,6 +84,38 @@ int binOf(double scaled) {
   return std::clamp(index, 0, kSubBins - 1);
 }
 
+// PCL's normals of `points` from their neighbours in `surface` within `radius` (searched with
+// `tree`, already on `surface`), turned towards `viewpoint`: pcl::NormalEstimation on blocks of
+// points on `workers` threads, the same normals as NormalEstimationOMP's without OpenMP.
+pcl::PointCloud<pcl::Normal>::Ptr normalsAt(const Cloud::Ptr& points, const Cloud::Ptr& surface,
+                                            const pcl::search::KdTree<pcl::PointXYZ>::Ptr& tree,
+                                            double radius, const Eigen::Vector3f& viewpoint,
+                                            int workers) {
+  constexpr std::size_t kBlock = 256;
+  auto normals = pcl::make_shared<pcl::PointCloud<pcl::Normal>>();
+  normals->resize(points->size());
+  const std::size_t blocks = (points->size() + kBlock - 1) / kBlock;
+  parallelFor(blocks, workers, [&](int, std::size_t block) {
+    auto indices = pcl::make_shared<pcl::Indices>();
+    for (std::size_t i = block * kBlock; i < std::min(points->size(), (block + 1) * kBlock); ++i) {
+      indices->push_back(static_cast<pcl::index_t>(i));
+    }
+    pcl::NormalEstimation<pcl::PointXYZ, pcl::Normal> estimation;
+    estimation.setInputCloud(points);
+    estimation.setIndices(indices);
+    estimation.setSearchSurface(surface);
+    estimation.setSearchMethod(tree);
+    estimation.setRadiusSearch(radius);
+    estimation.setViewPoint(viewpoint.x(), viewpoint.y(), viewpoint.z());
+    pcl::PointCloud<pcl::Normal> block_normals;
+    estimation.compute(block_normals);
+    for (std::size_t k = 0; k < indices->size(); ++k) {
+      (*normals)[static_cast<std::size_t>((*indices)[k])] = block_normals[k];
+    }
+  });
+  return normals;
+}
+
 // Simplified point feature histograms (SPFH) of the support points marked `needed`, each over
 // its support neighbours within `radius`: the same histograms as pcl::FPFHEstimation's, at half
 // the cost. PCL orders each pair's points canonically (pcl::computePairFeatures picks the point
@@ -91,15 +124,14 @@ int binOf(double scaled) {
 // stay zero.
 std::vector<Spfh> computeSpfh(const Cloud& support, const pcl::PointCloud<pcl::Normal>& normals,
                               const pcl::search::KdTree<pcl::PointXYZ>& tree,
-                              const std::vector<char>& needed, float radius) {
-  const auto count = static_cast<std::ptrdiff_t>(support.size());
+                              const std::vector<char>& needed, float radius, int workers) {
   std::vector<int> neighbour_count(support.size(), 0);
   // pairs[i]: the pairs point i computes, with the other point's index.
   std::vector<std::vector<std::pair<int, PairBins>>> pairs(support.size());
   const float inverse_two_pi = 1.0f / (2.0f * static_cast<float>(M_PI));  // PCL's d_pi_
-#pragma omp parallel for schedule(dynamic, 16)
-  for (std::ptrdiff_t i = 0; i < count; ++i) {
-    if (!needed[static_cast<std::size_t>(i)]) continue;
+  parallelFor(support.size(), workers, [&](int, std::size_t index) {
+    const auto i = static_cast<std::ptrdiff_t>(index);
+    if (!needed[index]) return;
     pcl::Indices indices;
     std::vector<float> distances;
     tree.radiusSearch(support[static_cast<std::size_t>(i)], radius, indices, distances);
@@ -124,7 +156,7 @@ std::vector<Spfh> computeSpfh(const Cloud& support, const pcl::PointCloud<pcl::N
                    static_cast<std::uint8_t>(binOf(kSubBins * ((f2 + 1.0) * 0.5))),
                    static_cast<std::uint8_t>(binOf(kSubBins * ((f3 + 1.0) * 0.5)))});
     }
-  }
+  });
   // Counts first, then one scale per row: PCL adds 100 / (neighbours - 1) per pair instead,
   // which differs by float rounding only.
   std::vector<Spfh> histograms(support.size());
@@ -183,7 +215,8 @@ bool weightedHistogram(const std::vector<Spfh>& spfh, const pcl::Indices& indice
 }  // namespace
 
 FeatureSet computeFeatures(const Cloud& cloud, const FeatureParameters& parameters,
-                           const Eigen::Vector3f& viewpoint) {
+                           const Eigen::Vector3f& viewpoint, int threads) {
+  const int workers = threads > 0 ? threads : hardwareThreads();
   checkParameters(parameters);
   FeatureSet result;
   result.descriptors.resize(0, kFpfhBins);
@@ -206,14 +239,8 @@ FeatureSet computeFeatures(const Cloud& cloud, const FeatureParameters& paramete
 
   // Normals only where FPFH needs them (the support points), each from the full-resolution cloud
   // within normal_radius: the cost follows the support, not the camera's resolution.
-  auto normals = pcl::make_shared<pcl::PointCloud<pcl::Normal>>();
-  pcl::NormalEstimationOMP<pcl::PointXYZ, pcl::Normal> normal_estimation;
-  normal_estimation.setInputCloud(support_candidates);
-  normal_estimation.setSearchSurface(surface);
-  normal_estimation.setSearchMethod(tree);
-  normal_estimation.setRadiusSearch(parameters.normal_radius);
-  normal_estimation.setViewPoint(viewpoint.x(), viewpoint.y(), viewpoint.z());
-  normal_estimation.compute(*normals);
+  const auto normals =
+      normalsAt(support_candidates, surface, tree, parameters.normal_radius, viewpoint, workers);
 
   // FPFH's pair features use every support point's normal; a NaN normal (too few neighbours
   // within normal_radius) would poison the histogram, so such points leave the search surface.
@@ -237,12 +264,10 @@ FeatureSet computeFeatures(const Cloud& cloud, const FeatureParameters& paramete
   const std::size_t keypoint_count = keypoints->size();
   std::vector<pcl::Indices> keypoint_neighbours(keypoint_count);
   std::vector<std::vector<float>> keypoint_distances(keypoint_count);
-#pragma omp parallel for schedule(dynamic, 16)
-  for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t>(keypoint_count); ++k) {
-    const auto index = static_cast<std::size_t>(k);
-    tree->radiusSearch((*keypoints)[index], parameters.fpfh_radius, keypoint_neighbours[index],
-                       keypoint_distances[index]);
-  }
+  parallelFor(keypoint_count, workers, [&](int, std::size_t k) {
+    tree->radiusSearch((*keypoints)[k], parameters.fpfh_radius, keypoint_neighbours[k],
+                       keypoint_distances[k]);
+  });
   std::vector<char> needed(support->size(), 0);
   std::vector<std::size_t> candidates;
   candidates.reserve(keypoint_count);
@@ -256,7 +281,7 @@ FeatureSet computeFeatures(const Cloud& cloud, const FeatureParameters& paramete
   if (candidates.empty()) return result;
 
   const std::vector<Spfh> spfh = computeSpfh(*support, *support_normals, *tree, needed,
-                                             static_cast<float>(parameters.fpfh_radius));
+                                             static_cast<float>(parameters.fpfh_radius), workers);
 
   result.keypoints.reserve(candidates.size());
   std::vector<std::array<float, kFpfhBins>> histograms;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "view_direction_classification/common/error.h"
+#include "view_direction_classification/common/parallel_for.h"
 
 namespace vdc {
 namespace {
@@ -203,15 +204,18 @@ Eigen::MatrixXf MultinomialLogisticRegression::predictProbabilities(
   const Eigen::Index n = X.rows();
   Eigen::MatrixXf probabilities(n, weights_.cols());
   const Eigen::Index blocks = (n + kBlockRows - 1) / kBlockRows;
-#pragma omp parallel for schedule(dynamic)
-  for (Eigen::Index b = 0; b < blocks; ++b) {
-    const Eigen::Index start = b * kBlockRows;
+  // On plain threads, not OpenMP: this runs on the estimator's path (common/parallel_for.h). A
+  // lazy (coefficient-wise) product: Eigen's blocked product would start OpenMP threads of its
+  // own inside each of these, and the inner dimension (the descriptor's 33 bins) is small.
+  parallelFor(static_cast<std::size_t>(blocks), hardwareThreads(), [&](int, std::size_t b) {
+    const Eigen::Index start = static_cast<Eigen::Index>(b) * kBlockRows;
     const Eigen::Index rows = std::min(kBlockRows, n - start);
-    Eigen::MatrixXd scores = X.middleRows(start, rows).cast<double>() * weights_.topRows(d);
+    Eigen::MatrixXd scores =
+        X.middleRows(start, rows).cast<double>().lazyProduct(weights_.topRows(d));
     scores.rowwise() += weights_.row(d);
     logSoftmaxRows(scores);
     probabilities.middleRows(start, rows) = scores.array().exp().cast<float>().matrix();
-  }
+  });
   return probabilities;
 }
 

@@ -164,7 +164,9 @@ SceneUpdate SceneEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
   last_segmented_camera_ = world_from_camera;
   std::vector<Eigen::Vector4d> supports;
   for (const SupportPlane& plane : segments.planes) supports.push_back(plane.coefficients);
-  const auto scene = verificationScene(cloud, supports, parameters_.segmentation.plane_distance);
+  // Indexed once for every candidate's and model's verifiers of this frame.
+  const SceneDepth scene =
+      indexRays(verificationScene(cloud, supports, parameters_.segmentation.plane_distance));
 
   std::vector<FrameCandidate> candidates =
       frameCandidates(cloud, segments, world_from_camera, &result);

@@ -19,7 +19,7 @@
 #include "counted_voxels.h"
 #include "fit_covariance.h"
 #include "icp_alignment.h"
-#include "parallel_for.h"
+#include "view_direction_classification/common/parallel_for.h"
 #include "roll_sector.h"
 #include "start_screening.h"
 #include "turned_starts.h"

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -67,7 +68,28 @@ std::unique_ptr<const NearestPoints> rayIndexOf(const pcl::PointCloud<pcl::Point
   return std::make_unique<const NearestPoints>(std::move(rays));
 }
 
+// The points of `cloud` with a ray, and their ray index (null for no cloud or no such point).
+std::pair<pcl::PointCloud<pcl::PointXYZ>::ConstPtr, std::shared_ptr<const NearestPoints>> withRays(
+    const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud) {
+  if (!cloud) return {};
+  auto kept = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  kept->reserve(cloud->size());
+  for (const auto& p : cloud->points) {
+    if (hasRay(p)) kept->push_back(p);
+  }
+  if (kept->empty()) return {};
+  std::shared_ptr<const NearestPoints> rays = rayIndexOf(*kept);
+  return {kept, rays};
+}
+
 }  // namespace
+
+SceneDepth indexRays(const SceneDepth& scene) {
+  SceneDepth indexed;
+  std::tie(indexed.occluders, indexed.occluder_rays) = withRays(scene.occluders);
+  std::tie(indexed.supports, indexed.support_rays) = withRays(scene.supports);
+  return indexed;
+}
 
 std::unique_ptr<PoseVerifier::IndexedView> PoseVerifier::indexView(
     const RefinementView& view) const {
@@ -86,8 +108,16 @@ std::unique_ptr<PoseVerifier::IndexedView> PoseVerifier::indexView(
   indexed->object = {points, rayIndexOf(*points)};
   indexed->footprint = convexHull(std::move(flat));
   indexed->camera_from_world = view.world_from_camera.inverse();
-  if (view.scene.occluders) indexed->scene = indexScene(*view.scene.occluders, *points);
-  if (view.scene.supports) indexed->supports = indexScene(*view.scene.supports, *points);
+  if (view.scene.occluders) {
+    indexed->scene = view.scene.occluder_rays
+                         ? RayIndex{view.scene.occluders, view.scene.occluder_rays}
+                         : indexScene(*view.scene.occluders, *points);
+  }
+  if (view.scene.supports) {
+    indexed->supports = view.scene.support_rays
+                            ? RayIndex{view.scene.supports, view.scene.support_rays}
+                            : indexScene(*view.scene.supports, *points);
+  }
   return indexed;
 }
 

@@ -41,9 +41,8 @@ TrainingSet generateTrainingSet(const DepthRenderer& renderer, const ViewSphere&
 
   int done = 0;
   reportProgress(progress, "render + features", 0, static_cast<std::size_t>(total));
-  // Clouds are independent; the FPFH estimator's own OpenMP loop runs single-threaded inside
-  // this parallel region (nested parallelism is off), which keeps both cores busy with less
-  // synchronisation than parallelising inside each cloud.
+  // Clouds are independent; the features of each run on its one thread (threads = 1), which
+  // keeps every core busy with less synchronisation than parallelising inside each cloud.
 #pragma omp parallel for schedule(dynamic)
   for (int c = 0; c < total; ++c) {
     const int view = c / clouds_per_view;
@@ -67,7 +66,7 @@ TrainingSet generateTrainingSet(const DepthRenderer& renderer, const ViewSphere&
       cloud.visible_centroid = object_from_camera * (sum / static_cast<double>(cloud.points));
     }
     // Normals face the camera, which sits at the origin of the cloud's own frame.
-    const FeatureSet f = computeFeatures(rendered, features, Eigen::Vector3f::Zero());
+    const FeatureSet f = computeFeatures(rendered, features, Eigen::Vector3f::Zero(), 1);
     cloud.descriptors = f.descriptors;
     cloud.object_keypoints.reserve(f.size());
     const Eigen::Isometry3f to_object = object_from_camera.cast<float>();

@@ -93,6 +93,18 @@ TEST(FpfhFeatures, DenseSurfaceGivesFiniteFeaturesAtKeypointDensity) {
   }
 }
 
+TEST(FpfhFeatures, TheThreadCountDoesNotChangeTheFeatures) {
+  // Each point's normal and histogram are computed by one thread and written to its own slot.
+  FeatureParameters parameters;
+  parameters.support_voxel = 0.003;
+  const FeatureSet one = computeFeatures(wavySurface(), parameters, Eigen::Vector3f::Zero(), 1);
+  const FeatureSet three = computeFeatures(wavySurface(), parameters, Eigen::Vector3f::Zero(), 3);
+  ASSERT_FALSE(one.empty());
+  ASSERT_EQ(one.size(), three.size());
+  EXPECT_EQ(one.keypoints, three.keypoints);
+  EXPECT_EQ(one.descriptors, three.descriptors);
+}
+
 TEST(FpfhFeatures, NanPointsAreIgnored) {
   const Cloud clean = wavySurface();
   Cloud with_nans;

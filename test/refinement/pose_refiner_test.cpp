@@ -587,6 +587,27 @@ TEST_F(PoseRefinerTest, APoseSunkIntoTheSupportIsContradictedWhereOneBehindAnOcc
   EXPECT_LT(truth.violation_fraction, 0.05);
 }
 
+TEST_F(PoseRefinerTest, ASceneIndexedOnceScoresAsTheSceneIndexedPerVerifier) {
+  // indexRays indexes the whole scene once for every verifier of a frame instead of each
+  // verifier indexing the points around its object: the same scores, the true pose's and a
+  // wrong one's.
+  RefinementView v = behindABar(kHandleSideOn, 0.7);
+  RefinementView indexed = v;
+  indexed.scene = indexRays(v.scene);
+  ASSERT_TRUE(indexed.scene.occluder_rays);
+  EXPECT_FALSE(indexed.scene.support_rays);
+  Eigen::Isometry3d mirrored = world_from_object_;
+  mirrored.linear() = quaternionToRotationMatrix(turnedAboutSight(v, M_PI));
+  for (const Eigen::Isometry3d& pose : {world_from_object_, mirrored}) {
+    const VerificationScore per_verifier = PoseVerifier(*surface_, {v}).score(pose);
+    const VerificationScore once = PoseVerifier(*surface_, {indexed}).score(pose);
+    EXPECT_EQ(once.observed, per_verifier.observed);
+    EXPECT_EQ(once.predicted, per_verifier.predicted);
+    EXPECT_DOUBLE_EQ(once.violation_fraction, per_verifier.violation_fraction);
+    EXPECT_DOUBLE_EQ(once.identityScore(), per_verifier.identityScore());
+  }
+}
+
 TEST_F(PoseRefinerTest, RefusesIcpThatDivergesOrDoesNotConverge) {
   const RefinementView v = view(kHandleSideOn, 1.0);
   const BinghamMixture belief({1.0}, {concentratedAt(turnedAboutSight(v, 0.3), 20.0)});

@@ -41,9 +41,11 @@ struct FeatureSet {
 // the keypoints with the support as search surface. NaN points are
 // ignored; keypoints whose normal or descriptor cannot be computed, or with fewer than
 // min_neighbours support points, are dropped, so the result never contains NaN. An empty or all-NaN
-// cloud gives an empty set. Throws vdc::Error for non-positive radii.
+// cloud gives an empty set. Throws vdc::Error for non-positive radii. `threads`: how many threads
+// share the per-point work (0: the machine's; 1 where the caller already runs clouds in parallel).
 FeatureSet computeFeatures(const pcl::PointCloud<pcl::PointXYZ>& cloud,
                            const FeatureParameters& parameters = {},
-                           const Eigen::Vector3f& viewpoint = Eigen::Vector3f::Zero());
+                           const Eigen::Vector3f& viewpoint = Eigen::Vector3f::Zero(),
+                           int threads = 0);
 
 }  // namespace vdc

@@ -26,8 +26,16 @@ struct SceneDepth {
   // free space (a mug's handle over the table where the camera saw the table), behind it is sunk
   // into the table.
   pcl::PointCloud<pcl::PointXYZ>::ConstPtr supports;
+  // Optional: both indexed by their rays (x/z, y/z, 0) once for every verifier of the frame
+  // (indexRays). Without them each verifier indexes the points around its own object, which for
+  // a scene of many candidates and models costs more than the verification itself.
+  std::shared_ptr<const NearestPoints> occluder_rays, support_rays;
   bool empty() const { return !occluders && !supports; }
 };
+
+// The scene's points with a ray (in front of the camera, not 90 degrees off its axis) and their
+// ray indices: what PoseVerifier would otherwise build per verifier.
+SceneDepth indexRays(const SceneDepth& scene);
 
 // One observation of the object: its points in the camera frame (finite; the segmented object)
 // and where the camera was in the fixed frame.
@@ -117,7 +125,7 @@ class PoseVerifier {
   // Points indexed by their rays (x/z, y/z, 0).
   struct RayIndex {
     pcl::PointCloud<pcl::PointXYZ>::ConstPtr points;
-    std::unique_ptr<const NearestPoints> rays;
+    std::shared_ptr<const NearestPoints> rays;
   };
   struct IndexedView {
     RayIndex object;

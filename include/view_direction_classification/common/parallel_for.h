@@ -1,7 +1,10 @@
 #pragma once
 
-// A parallel loop over independent work items (private to refinement): the starts' ICPs are
-// independent and each costs milliseconds, so two cores halve a refinement's latency.
+// A parallel loop over independent work items on plain threads, joined before it returns:
+// refinement's ICP starts and the features' per-point work. Not OpenMP on the estimator's path:
+// libgomp's workers spin after each parallel region, and on a robot's few cores a spinning
+// worker between the many short feature regions took a third of a scene's identification time
+// from the refinement threads (doc/performance.md).
 
 #include <cstddef>
 #include <functional>
@@ -14,5 +17,8 @@ namespace vdc {
 // threw, after every thread has stopped. workers < 1 counts as 1.
 void parallelFor(std::size_t count, int workers,
                  const std::function<void(int worker, std::size_t i)>& work);
+
+// The machine's hardware threads (at least 1).
+int hardwareThreads();
 
 }  // namespace vdc

@@ -1,4 +1,4 @@
-#include "parallel_for.h"
+#include "view_direction_classification/common/parallel_for.h"
 
 #include <algorithm>
 #include <atomic>
@@ -36,5 +36,7 @@ void parallelFor(std::size_t count, int workers,
   for (std::thread& helper : helpers) helper.join();
   if (failure) std::rethrow_exception(failure);
 }
+
+int hardwareThreads() { return std::max(1, static_cast<int>(std::thread::hardware_concurrency())); }
 
 }  // namespace vdc
