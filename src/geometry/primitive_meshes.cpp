@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "view_direction_classification/common/error.h"
 
@@ -12,6 +13,30 @@ void requireLength(double value, const char* name) {
   if (!(value > 0.0) || !std::isfinite(value)) {
     throw Error(std::string(name) + " must be a positive length, got " + std::to_string(value));
   }
+}
+
+// A prism: `profile`, a polygon in the (y, z) plane, counter-clockwise seen from +x and
+// star-shaped about `centre` (each cap is a fan about it), extruded over x in [-length / 2,
+// length / 2]. Closed and outward oriented.
+TriangleMesh extrudedProfile(const std::vector<Eigen::Vector2f>& profile,
+                             const Eigen::Vector2f& centre, float length) {
+  TriangleMesh mesh;
+  const int m = static_cast<int>(profile.size());
+  const float half = 0.5f * length;
+  for (const float x : {half, -half}) {  // the front ring (x > 0) is 0..m-1, the back m..2m-1
+    for (const Eigen::Vector2f& p : profile) mesh.vertices.emplace_back(x, p.x(), p.y());
+  }
+  const int front_centre = 2 * m, back_centre = front_centre + 1;
+  mesh.vertices.emplace_back(half, centre.x(), centre.y());
+  mesh.vertices.emplace_back(-half, centre.x(), centre.y());
+  for (int k = 0; k < m; ++k) {
+    const int next = (k + 1) % m;
+    mesh.triangles.emplace_back(front_centre, k, next);         // seen from +x
+    mesh.triangles.emplace_back(back_centre, m + next, m + k);  // seen from -x
+    mesh.triangles.emplace_back(k, m + k, m + next);  // the side through the edge k -> next:
+    mesh.triangles.emplace_back(k, m + next, next);   // outwards is right of it, seen from +x
+  }
+  return mesh;
 }
 
 }  // namespace
@@ -64,6 +89,43 @@ TriangleMesh makeCylinderMesh(double radius, double height, int segments) {
     mesh.triangles.emplace_back(top_centre, t0, t1);     // top, seen from above
   }
   return mesh;
+}
+
+TriangleMesh makeCartonMesh(const Eigen::Vector3d& size, double gable, double fin_height,
+                            double fin_thickness) {
+  requireLength(size.x(), "the carton's x size");
+  requireLength(size.y(), "the carton's y size");
+  requireLength(size.z(), "the carton's height");
+  requireLength(gable, "the carton's gable");
+  if (!(fin_height >= 0.0) || !std::isfinite(fin_height)) {
+    throw Error("the carton's fin height must be zero or a positive length, got " +
+                std::to_string(fin_height));
+  }
+  requireLength(fin_thickness, "the carton's fin thickness");
+  if (fin_height > 0.0 && fin_thickness >= size.y()) {
+    throw Error("the carton's fin (" + std::to_string(fin_thickness) +
+                " m thick) must be thinner than the carton (" + std::to_string(size.y()) + " m)");
+  }
+  const double wall = size.z() - gable - fin_height;
+  if (!(wall > 0.0)) {
+    throw Error("the carton's gable and fin (" + std::to_string(gable + fin_height) +
+                " m) leave its walls no height in " + std::to_string(size.z()) + " m");
+  }
+  // The cross-section across the ridge, counter-clockwise seen from +x (y right, z up): the base,
+  // the walls, the roof's slopes and, between them, the fin.
+  const float a = static_cast<float>(0.5 * size.y()), w = static_cast<float>(wall);
+  const float ridge = static_cast<float>(wall + gable), top = static_cast<float>(size.z());
+  std::vector<Eigen::Vector2f> profile{{-a, 0.0f}, {a, 0.0f}, {a, w}};
+  if (fin_height > 0.0) {
+    const float t = static_cast<float>(0.5 * fin_thickness);
+    const float roof_at_fin = ridge - (ridge - w) * t / a;  // the slope's height at |y| = t
+    profile.insert(profile.end(), {{t, roof_at_fin}, {t, top}, {-t, top}, {-t, roof_at_fin}});
+  } else {
+    profile.emplace_back(0.0f, ridge);
+  }
+  profile.emplace_back(-a, w);
+  // Every vertex, and every edge whole, is seen from the walls' mid-height on the axis.
+  return extrudedProfile(profile, Eigen::Vector2f(0.0f, 0.5f * w), static_cast<float>(size.x()));
 }
 
 TriangleMesh makeRectangleMesh(const Eigen::Vector2d& size) {

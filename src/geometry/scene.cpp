@@ -1,5 +1,6 @@
 #include "view_direction_classification/geometry/scene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -19,12 +20,18 @@ TriangleMesh transformed(const TriangleMesh& mesh, const Eigen::Isometry3d& pose
   return result;
 }
 
-// The numbers after a primitive's keyword; throws unless there are exactly `count`.
-std::vector<double> primitiveSizes(std::istringstream& stream, std::size_t count) {
+// The numbers after a primitive's keyword; throws unless there are `count` (to `most`, when
+// more than `count`).
+std::vector<double> primitiveSizes(std::istringstream& stream, std::size_t count,
+                                   std::size_t most = 0) {
   std::vector<double> sizes;
   for (double value; stream >> value;) sizes.push_back(value);
-  if (!stream.eof() || sizes.size() != count) {
-    throw Error("expected " + std::to_string(count) + " sizes in metres after the shape's name");
+  most = std::max(most, count);
+  if (!stream.eof() || sizes.size() < count || sizes.size() > most) {
+    throw Error("expected " +
+                (most > count ? std::to_string(count) + " or " + std::to_string(most)
+                              : std::to_string(count)) +
+                " sizes in metres after the shape's name");
   }
   return sizes;
 }
@@ -68,17 +75,24 @@ TriangleMesh distractorMesh(const std::string& description) {
       const std::vector<double> s = primitiveSizes(stream, 2);
       return makeCylinderMesh(s[0], s[1]);
     }
+    if (shape == "carton") {
+      const std::vector<double> s = primitiveSizes(stream, 4, 5);
+      return makeCartonMesh(Eigen::Vector3d(s[0], s[1], s[2]), s[3], s.size() > 4 ? s[4] : 0.0);
+    }
   } catch (const Error& error) {
     throw Error("distractor '" + description + "': " + error.what());
   }
   if (description.empty()) {
-    throw Error("a distractor needs a description: box SX SY SZ, cylinder R H or a mesh file");
+    throw Error(
+        "a distractor needs a description: box SX SY SZ, cylinder R H, carton SX SY SZ GABLE "
+        "[FIN] or a mesh file");
   }
   try {
     return loadMesh(description);
   } catch (const Error& error) {
     throw Error("distractor '" + description +
-                "' is neither 'box SX SY SZ', 'cylinder R H' nor a readable mesh file: " +
+                "' is neither 'box SX SY SZ', 'cylinder R H', 'carton SX SY SZ GABLE [FIN]' nor a "
+                "readable mesh file: " +
                 error.what());
   }
 }

@@ -99,8 +99,8 @@ void addEvaluateScenesCommand(CLI::App& app) {
                    "trained on, placed in the scenes)")
       ->required();
   command->add_option("--distractor", options->distractors,
-                      "an unknown object: box:X,Y,Z or cylinder:R,H [m], or a mesh file (repeat; "
-                      "default: three boxes and two cylinders)");
+                      "an unknown object: box:X,Y,Z, cylinder:R,H or carton:X,Y,Z,GABLE[,FIN] "
+                      "[m], or a mesh file (repeat; default: three boxes and two cylinders)");
   command->add_option("--out", options->out_dir, "directory for scenes.csv")->required();
   command->add_option("--scenes", s.scenes, "number of scenes")
       ->capture_default_str()

@@ -1,5 +1,6 @@
 #include "scene_evaluation_options.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <memory>
@@ -14,9 +15,10 @@ namespace vdc::tools {
 
 namespace {
 
-// "a,b,c" as `count` positive finite numbers; throws vdc::Error quoting `text` otherwise.
+// "a,b,c" as `count` (to `most`, when more than `count`) positive finite numbers; throws
+// vdc::Error quoting `text` otherwise.
 std::vector<double> positiveNumbers(const std::string& list, std::size_t count,
-                                    const std::string& text) {
+                                    const std::string& text, std::size_t most = 0) {
   std::vector<double> numbers;
   std::stringstream stream(list);
   std::string item;
@@ -26,8 +28,10 @@ std::vector<double> positiveNumbers(const std::string& list, std::size_t count,
     if (item.empty() || *end != '\0' || !std::isfinite(value) || value <= 0.0) break;
     numbers.push_back(value);
   }
-  if (numbers.size() != count || !stream.eof()) {
+  most = std::max(most, count);
+  if (numbers.size() < count || numbers.size() > most || !stream.eof()) {
     throw Error("--distractor " + text + ": needs " + std::to_string(count) +
+                (most > count ? " or " + std::to_string(most) : std::string()) +
                 " positive sizes in metres, comma-separated");
   }
   return numbers;
@@ -63,6 +67,11 @@ TriangleMesh distractorMesh(const std::string& text) {
   if (text.rfind("cylinder:", 0) == 0) {
     const auto sizes = positiveNumbers(text.substr(9), 2, text);
     return makeCylinderMesh(sizes[0], sizes[1]);
+  }
+  if (text.rfind("carton:", 0) == 0) {
+    const auto sizes = positiveNumbers(text.substr(7), 4, text, 5);
+    return makeCartonMesh(Eigen::Vector3d(sizes[0], sizes[1], sizes[2]), sizes[3],
+                          sizes.size() > 4 ? sizes[4] : 0.0);
   }
   return loadMesh(text);
 }

@@ -17,7 +17,8 @@ SceneModelSpec parseSceneModelSpec(const std::string& text);
 // Loads the bundle and the mesh; throws vdc::Error naming the file that cannot be loaded.
 SceneEvaluationModel loadSceneModel(const SceneModelSpec& spec);
 
-// `--distractor`: "box:X,Y,Z" (full sizes [m]), "cylinder:R,H" ([m]) or a mesh file (metres).
+// `--distractor`: "box:X,Y,Z" (full sizes [m]), "cylinder:R,H" ([m]), "carton:X,Y,Z,GABLE[,FIN]"
+// (makeCartonMesh [m]) or a mesh file (metres).
 // Throws vdc::Error quoting the text for a malformed primitive or a mesh that cannot be loaded.
 TriangleMesh distractorMesh(const std::string& text);
 // The distractors when none is given: boxes and cylinders of household sizes, some of a mug's

@@ -38,12 +38,53 @@ TEST(PrimitiveMeshes, BoxAndCylinderAreClosedOutwardSolidsStandingOnZeroWithThei
   EXPECT_NEAR(cylinder.bounds().min().z(), 0.0, 1e-9);
 }
 
+// The gable-top carton is a prism across its ridge: its volume is its length times the area of
+// its cross-section (walls, roof triangle, and the fin's rectangle above the slopes).
+TEST(PrimitiveMeshes, CartonIsAClosedOutwardPrismWithItsRoofAndFin) {
+  const double width = 0.1, depth = 0.09, height = 0.25, gable = 0.03, fin = 0.02, thick = 0.006;
+  const TriangleMesh carton =
+      makeCartonMesh(Eigen::Vector3d(width, depth, height), gable, fin, thick);
+  const MeshCheck check = checkMesh(carton);
+  EXPECT_TRUE(check.watertight);
+  EXPECT_EQ(check.inconsistent_edges, 0u);
+  EXPECT_EQ(check.degenerate_triangles, 0u);
+  const double wall = height - gable - fin;
+  // The fin stands on the slopes: above them it fills thick x fin, plus the slopes' fall over
+  // its half thickness, gable * thick^2 / (2 depth).
+  const double section =
+      depth * wall + 0.5 * depth * gable + thick * fin + gable * thick * thick / (2.0 * depth);
+  EXPECT_NEAR(carton.signedVolume(), width * section, 1e-9);
+  const Eigen::AlignedBox3f bounds = carton.bounds();
+  EXPECT_TRUE(bounds.min().isApprox(Eigen::Vector3f(-0.05f, -0.045f, 0.0f), 1e-6f));
+  EXPECT_TRUE(bounds.max().isApprox(Eigen::Vector3f(0.05f, 0.045f, 0.25f), 1e-6f));
+  // Only the fin's vertices stand above the ridge: 3 mm either side of y = 0.
+  for (const Eigen::Vector3f& v : carton.vertices) {
+    if (v.z() > wall + gable + 1e-6) {
+      EXPECT_NEAR(std::abs(v.y()), 0.003, 1e-7);
+    }
+  }
+
+  // Without a fin the roof ends in the ridge: walls, then a triangle of the gable's height.
+  const TriangleMesh plain = makeCartonMesh(Eigen::Vector3d(0.095, 0.095, 0.23), 0.03);
+  EXPECT_TRUE(checkMesh(plain).watertight);
+  EXPECT_EQ(checkMesh(plain).inconsistent_edges, 0u);
+  EXPECT_NEAR(plain.signedVolume(), 0.095 * 0.095 * (0.2 + 0.5 * 0.03), 1e-9);
+  EXPECT_NEAR(plain.bounds().max().z(), 0.23, 1e-7);
+  EXPECT_NEAR(plain.bounds().min().z(), 0.0, 1e-9);
+}
+
 TEST(PrimitiveMeshes, RefuseSizesThatAreNotPositiveLengths) {
   EXPECT_THROW(makeBoxMesh(Eigen::Vector3d(0.1, 0.0, 0.1)), Error);
   EXPECT_THROW(makeBoxMesh(Eigen::Vector3d(0.1, NAN, 0.1)), Error);
   EXPECT_THROW(makeCylinderMesh(-0.1, 0.1), Error);
   EXPECT_THROW(makeCylinderMesh(0.1, 0.1, 3), Error);
   EXPECT_THROW(makeRectangleMesh(Eigen::Vector2d(1.0, INFINITY)), Error);
+  const Eigen::Vector3d carton(0.1, 0.1, 0.2);
+  EXPECT_THROW(makeCartonMesh(carton, 0.0), Error);
+  EXPECT_THROW(makeCartonMesh(carton, 0.03, -0.01), Error);
+  EXPECT_THROW(makeCartonMesh(carton, 0.03, 0.02, 0.1), Error);  // as thick as the carton
+  EXPECT_THROW(makeCartonMesh(carton, 0.16, 0.05), Error);       // no room for the walls
+  EXPECT_THROW(makeCartonMesh(Eigen::Vector3d(0.1, NAN, 0.2), 0.03), Error);
 }
 
 TEST(Scene, TableStandsUnderTheObjectsLowestPointAndEveryPartIsPlacedInTheFixedFrame) {
@@ -83,6 +124,13 @@ TEST(Scene, TableStandsUnderTheObjectsLowestPointAndEveryPartIsPlacedInTheFixedF
 TEST(Scene, DistractorDescriptionsNameBoxesCylindersOrMeshFiles) {
   EXPECT_NEAR(distractorMesh("box 0.1 0.2 0.3").signedVolume(), 0.006, 1e-9);
   EXPECT_NEAR(distractorMesh("cylinder 0.03 0.2").bounds().max().z(), 0.2, 1e-7);
+  // A carton's fin may be left out.
+  EXPECT_NEAR(distractorMesh("carton 0.1 0.1 0.2 0.04").signedVolume(),
+              0.1 * 0.1 * (0.16 + 0.5 * 0.04), 1e-9);
+  EXPECT_NEAR(distractorMesh("carton 0.1 0.1 0.25 0.03 0.02").bounds().max().z(), 0.25, 1e-7);
+  EXPECT_THROW(distractorMesh("carton 0.1 0.1 0.2"), Error);
+  EXPECT_THROW(distractorMesh("carton 0.1 0.1 0.2 0.03 0.01 0.5"), Error);
+  EXPECT_THROW(distractorMesh("carton 0.1 0.1 0.2 0.3"), Error);
   EXPECT_THROW(distractorMesh("box 0.1 0.2"), Error);
   EXPECT_THROW(distractorMesh("box 0.1 0.2 0.3 0.4"), Error);
   EXPECT_THROW(distractorMesh("cylinder 0.03 tall"), Error);

@@ -1,14 +1,12 @@
 #include "view_direction_classification/scene/scene_segmentation.h"
 
 #include <gtest/gtest.h>
-#include <pcl/common/transforms.h>
 #include <pcl/io/pcd_io.h>
 #include <pcl/kdtree/kdtree_flann.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <limits>
@@ -17,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "support/milk_scene.h"
 #include "support/mug_scene.h"
 #include "view_direction_classification/common/error.h"
 #include "view_direction_classification/geometry/depth_renderer.h"
@@ -358,14 +357,6 @@ TEST(SceneSegmentation, KeepsTheLargestCandidatesUpToTheCapAndCountsTheRest) {
   EXPECT_NE(small_only.note.find("max_cluster_points"), std::string::npos) << small_only.note;
 }
 
-// PCL's Kinect scene of a milk carton among other objects on a table (correspondence grouping
-// tutorial, BSD-3, from Debian's python3-pcl) and the carton's own cloud, from the cache
-// scripts/install_deps.sh fills or from VDC_REAL_SCENE_DIR.
-std::string realSceneDirectory() {
-  if (const char* directory = std::getenv("VDC_REAL_SCENE_DIR")) return directory;
-  return VDC_REAL_SCAN_CACHE;
-}
-
 // The sides of the points' box along their principal axes, largest first.
 Eigen::Vector3d principalSides(const pcl::PointCloud<pcl::PointXYZ>& cloud) {
   SceneSegmentationParameters everything;
@@ -375,21 +366,6 @@ Eigen::Vector3d principalSides(const pcl::PointCloud<pcl::PointXYZ>& cloud) {
   everything.max_cluster_points = std::numeric_limits<int>::max();
   const SceneSegments segments = segmentScene(cloud, everything);
   return segments.candidates.empty() ? Eigen::Vector3d::Zero() : segments.candidates[0].extent;
-}
-
-// milk.pcd is NOT in the scene's frame as shipped (its points lie up to 13 cm from the scene's):
-// it is the carton cut out of the scene and moved by this rigid transform, the pose PCL's
-// correspondence grouping tutorial finds (R ~ 14 degrees, t ~ (-0.16, 0.21, -0.04) m), refined
-// here once by ICP. Applied, it puts every carton point on a scene point (checked below).
-pcl::PointCloud<pcl::PointXYZ> cartonInSceneFrame(const pcl::PointCloud<pcl::PointXYZ>& carton) {
-  Eigen::Matrix4f scene_from_carton;
-  scene_from_carton << 0.968884f, -0.119713f, 0.216661f, -0.158966f,  //
-      0.116827f, 0.992814f, 0.0261251f, 0.212499f,                    //
-      -0.21823f, 9.8e-7f, 0.975901f, -0.0421221f,                     //
-      0.0f, 0.0f, 0.0f, 1.0f;
-  pcl::PointCloud<pcl::PointXYZ> moved;
-  pcl::transformPointCloud(carton, moved, scene_from_carton);
-  return moved;
 }
 
 // The index of each point's nearest scene point (KdTreeFLANN skips the scene's NaNs and returns
@@ -483,12 +459,10 @@ pcl::PointCloud<pcl::PointXYZ> finitePoints(const pcl::PointCloud<pcl::PointXYZ>
 }
 
 TEST(SceneSegmentation, RealKinectSceneWithDefaultsHasTheCartonAsOneCandidate) {
-  const std::string scene_path = realSceneDirectory() + "/milk_cartoon_all_small_clorox.pcd";
-  const std::string carton_path = realSceneDirectory() + "/milk.pcd";
+  const std::string scene_path = test::milkScenePath(), carton_path = test::milkCartonPath();
   if (!std::filesystem::exists(scene_path) || !std::filesystem::exists(carton_path)) {
-    GTEST_SKIP() << "PCL's milk scene is not at " << scene_path << " (with milk.pcd): run "
-                 << "scripts/install_deps.sh (it unpacks it from `apt-get download "
-                    "python3-pcl`) or set VDC_REAL_SCENE_DIR";
+    GTEST_SKIP() << "PCL's milk scene is not at " << scene_path
+                 << " (with milk.pcd): " << test::kMilkSceneMissing;
   }
   pcl::PointCloud<pcl::PointXYZ>::Ptr scene(new pcl::PointCloud<pcl::PointXYZ>);
   pcl::PointCloud<pcl::PointXYZ> carton;
@@ -496,7 +470,7 @@ TEST(SceneSegmentation, RealKinectSceneWithDefaultsHasTheCartonAsOneCandidate) {
   ASSERT_EQ(pcl::io::loadPCDFile(carton_path, carton), 0) << carton_path;
   double farthest = 0.0;
   const std::vector<int> carton_indices =
-      nearestSceneIndices(scene, cartonInSceneFrame(carton), &farthest);
+      nearestSceneIndices(scene, test::cartonInSceneFrame(carton), &farthest);
   ASSERT_LT(farthest, 1e-4) << "milk.pcd, moved, is not made of the scene's points";
   const Eigen::Vector3d carton_sides = principalSides(carton);
 

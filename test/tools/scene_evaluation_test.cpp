@@ -46,6 +46,11 @@ TEST(SceneEvaluationOptions, DistractorsArePrimitivesOfGivenSizesOrMeshFiles) {
   EXPECT_THROW(distractorMesh("box:0.1,0.2"), Error);
   EXPECT_THROW(distractorMesh("box:0.1,-0.2,0.3"), Error);
   EXPECT_THROW(distractorMesh("cylinder:0.05,0.2,0.1"), Error);
+  // A gable-top carton, its fin optional.
+  EXPECT_NEAR(distractorMesh("carton:0.1,0.1,0.2,0.04").signedVolume(), 0.1 * 0.1 * 0.18, 1e-9);
+  EXPECT_NEAR(distractorMesh("carton:0.1,0.1,0.25,0.03,0.02").bounds().sizes().z(), 0.25, 1e-6);
+  EXPECT_THROW(distractorMesh("carton:0.1,0.1,0.2"), Error);
+  EXPECT_THROW(distractorMesh("carton:0.1,0.1,0.2,0.03,0.01,0.5"), Error);
   EXPECT_THROW(distractorMesh("/nonexistent/mesh.ply"), Error);
   for (const std::string& text : defaultDistractors()) EXPECT_NO_THROW(distractorMesh(text));
 }

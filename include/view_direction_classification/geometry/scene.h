@@ -36,9 +36,10 @@ double tableHeight(const Scene& scene);
 TriangleMesh sceneMesh(const Scene& scene);
 
 // A distractor's mesh from its description: "box SX SY SZ" (full sizes [m]), "cylinder R H"
-// (radius, height [m]), both standing on z = 0 of their frame (primitive_meshes.h), or else the
-// path of a mesh file (loadMesh). Throws vdc::Error naming the description if it cannot be
-// parsed or loaded.
+// (radius, height [m]), "carton SX SY SZ GABLE [FIN]" (makeCartonMesh: whole sizes, the roof's
+// rise and the fin's height [m], no fin when left out), all standing on z = 0 of their frame
+// (primitive_meshes.h), or else the path of a mesh file (loadMesh). Throws vdc::Error naming the
+// description if it cannot be parsed or loaded.
 TriangleMesh distractorMesh(const std::string& description);
 
 }  // namespace vdc
