@@ -123,6 +123,17 @@ class PoseRefinerTest : public ::testing::Test {
     v.scene.occluders = seen;
     return v;
   }
+  // The view `mug` with `mesh` rendered instead of the mug, at mug_from_mesh in the mug's frame.
+  RefinementView inPlaceOfTheMug(const RefinementView& mug, const TriangleMesh& mesh,
+                                 const Eigen::Isometry3d& mug_from_mesh) const {
+    const Eigen::Isometry3d camera_from_mesh =
+        mug.world_from_camera.inverse() * world_from_object_ * mug_from_mesh;
+    RefinementView result = mug;
+    std::mt19937 rng(5);
+    result.points = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>(
+        DepthRenderer(mesh).render(camera_from_mesh, DepthNoiseModel{true}, &rng));
+    return result;
+  }
   Eigen::Vector4d truth() const { return orientationOf(world_from_object_); }
 
   Eigen::Vector3d position() const { return world_from_object_.translation(); }
@@ -350,12 +361,7 @@ TEST_F(PoseRefinerTest, TheInsideOfAThinWallExplainsANarrowerCanButItsIdentitySc
   // The can's origin is its base centre, the mug's its body's centre.
   Eigen::Isometry3d mug_from_can = Eigen::Isometry3d::Identity();
   mug_from_can.translation().z() = -0.5 * shape.height + shape.bottom;
-  const Eigen::Isometry3d camera_from_can =
-      mug.world_from_camera.inverse() * world_from_object_ * mug_from_can;
-  RefinementView can_view = mug;
-  std::mt19937 rng(5);
-  can_view.points = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>(
-      DepthRenderer(can).render(camera_from_can, DepthNoiseModel{true}, &rng));
+  const RefinementView can_view = inPlaceOfTheMug(mug, can, mug_from_can);
   ASSERT_GT(can_view.points->size(), 500u);
 
   const VerificationScore on_can = PoseVerifier(*surface_, {can_view}).score(world_from_object_);
@@ -377,12 +383,7 @@ TEST_F(PoseRefinerTest, AModelAFewMillimetresOffTheShapeExplainsFewPointsClosely
   const TriangleMesh can = makeCylinderMesh(shape.outer_radius - 0.003, shape.height, 96);
   Eigen::Isometry3d mug_from_can = Eigen::Isometry3d::Identity();
   mug_from_can.translation() = Eigen::Vector3d(-0.003, 0.0, -0.5 * shape.height);
-  const Eigen::Isometry3d camera_from_can =
-      mug.world_from_camera.inverse() * world_from_object_ * mug_from_can;
-  RefinementView can_view = mug;
-  std::mt19937 rng(5);
-  can_view.points = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>(
-      DepthRenderer(can).render(camera_from_can, DepthNoiseModel{true}, &rng));
+  const RefinementView can_view = inPlaceOfTheMug(mug, can, mug_from_can);
   ASSERT_GT(can_view.points->size(), 500u);
   const VerificationScore on_can = PoseVerifier(*surface_, {can_view}).score(world_from_object_);
   const VerificationScore on_mug = PoseVerifier(*surface_, {mug}).score(world_from_object_);
