@@ -205,10 +205,12 @@ void OrientationEstimator::setParameters(EstimatorParameters parameters) {
 ViewUpdate OrientationEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
                                         const Eigen::Isometry3d& world_from_camera,
                                         std::optional<double> time,
-                                        const SceneDepth& verification_scene) {
+                                        const SceneDepth& verification_scene, BeliefSearch search) {
   if (!world_from_camera.matrix().allFinite()) {
     throw Error("the camera pose given to the orientation estimator is not finite");
   }
+  // An earlier view's search left pending belongs in the belief before this view.
+  if (pending_search_) completeSearch(ViewUpdate{});
   ViewUpdate result;
   const Clock::time_point start = Clock::now();
   auto finish = [&]() {
@@ -310,7 +312,7 @@ ViewUpdate OrientationEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cl
     refineAfterFusion(object.points,
                       verification_scene.empty() ? verificationScene(cloud, object, segmentation)
                                                  : verification_scene,
-                      world_from_camera, measurement, line_of_sight, &result);
+                      world_from_camera, measurement, line_of_sight, search, &result);
   }
   const Clock::time_point refined = Clock::now();
   result.timing.refinement = millisecondsBetween(fused, refined);
@@ -323,7 +325,7 @@ void OrientationEstimator::refineAfterFusion(const pcl::PointCloud<pcl::PointXYZ
                                              const Eigen::Isometry3d& world_from_camera,
                                              const BinghamMixture& measurement,
                                              const Eigen::Vector4d& line_of_sight,
-                                             ViewUpdate* result) {
+                                             BeliefSearch search, ViewUpdate* result) {
   // This view first, then the latest earlier ones (thinned to the refiner's voxel): the object
   // stands still and the camera poses are known, so a pose must fit them all.
   RefinementView view;
@@ -336,9 +338,50 @@ void OrientationEstimator::refineAfterFusion(const pcl::PointCloud<pcl::PointXYZ
   RefinementResult refinement = refiner_->refine(belief(), position, views);
   rememberRefinedView(view);
   result->refinement_skip_reason = refinement.skip_reason;
+  std::optional<DueSearch> due;
   if (search_refiner_ && !refinement.skipped()) {
-    checkBeliefOnView(view, views, position, measurement, line_of_sight, &refinement, result);
+    due = searchDueOnView(view, views, position, refinement);
   }
+  if (!due) {
+    fuseRefinement(refinement, result);
+    return;
+  }
+  due->measurement = measurement;
+  due->line_of_sight = line_of_sight;
+  due->refinement = std::move(refinement);
+  if (search == BeliefSearch::kDeferred) {
+    // The scores of the belief's own poses, for the caller to compare; nothing fused yet.
+    if (!due->refinement.kept.empty()) {
+      result->verified_score = due->refinement.kept.front().score.score();
+      result->identity_score = due->refinement.kept.front().score.identityScore();
+    }
+    result->search_pending = true;
+    pending_search_ = std::move(due);
+    return;
+  }
+  searchBeyondBelief(due->views, due->position, due->belief_pose, due->belief_score,
+                     due->measurement, due->line_of_sight, &due->refinement, result);
+  fuseRefinement(due->refinement, result);
+}
+
+ViewUpdate OrientationEstimator::completeSearch(ViewUpdate update) {
+  if (!pending_search_) return update;
+  const Clock::time_point start = Clock::now();
+  DueSearch due = std::move(*pending_search_);
+  pending_search_.reset();
+  update.search_pending = false;
+  update.verified_score.reset();
+  update.identity_score.reset();
+  searchBeyondBelief(due.views, due.position, due.belief_pose, due.belief_score, due.measurement,
+                     due.line_of_sight, &due.refinement, &update);
+  fuseRefinement(due.refinement, &update);
+  const double searched_ms = millisecondsBetween(start, Clock::now());
+  update.timing.refinement += searched_ms;
+  update.timing.total += searched_ms;
+  return update;
+}
+
+void OrientationEstimator::fuseRefinement(const RefinementResult& refinement, ViewUpdate* result) {
   if (refinement.kept.empty()) return;
   filter_.update(refinedMeasurement(refinement, parameters_.refined_fusion));
   map_cache_.reset();
@@ -351,31 +394,27 @@ void OrientationEstimator::refineAfterFusion(const pcl::PointCloud<pcl::PointXYZ
   result->identity_score = refinement.kept.front().score.identityScore();
 }
 
-void OrientationEstimator::checkBeliefOnView(const RefinementView& view,
-                                             const std::vector<RefinementView>& views,
-                                             const Eigen::Vector3d& position,
-                                             const BinghamMixture& measurement,
-                                             const Eigen::Vector4d& line_of_sight,
-                                             RefinementResult* refinement, ViewUpdate* result) {
+std::optional<OrientationEstimator::DueSearch> OrientationEstimator::searchDueOnView(
+    const RefinementView& view, const std::vector<RefinementView>& views,
+    const Eigen::Vector3d& position, const RefinementResult& refinement) {
   check_views_.push_front(thinnedView(view, parameters_.refinement_parameters.scene_voxel));
   while (static_cast<int>(check_views_.size()) > parameters_.belief_check.check_views) {
     check_views_.pop_back();
   }
   // The belief's best pose: refinement's, or without one the MAP at the position estimate.
-  Eigen::Isometry3d belief_pose = Eigen::Isometry3d::Identity();
-  double belief_score = 0.0;
-  if (refinement->kept.empty()) {
-    belief_pose.linear() = quaternionToRotationMatrix(mapOrientation());
-    belief_pose.translation() = position;
-    belief_score = verifiedScore(*refiner_, {check_views_.front()}, belief_pose);
+  DueSearch due;
+  if (refinement.kept.empty()) {
+    due.belief_pose.linear() = quaternionToRotationMatrix(mapOrientation());
+    due.belief_pose.translation() = position;
+    due.belief_score = verifiedScore(*refiner_, {check_views_.front()}, due.belief_pose);
   } else {
-    belief_pose = refinement->kept.front().world_from_object;
-    belief_score = refinement->kept.front().score.score();
+    due.belief_pose = refinement.kept.front().world_from_object;
+    due.belief_score = refinement.kept.front().score.score();
   }
-  if (belief_score < searchThreshold()) {
-    searchBeyondBelief(views, position, belief_pose, belief_score, measurement, line_of_sight,
-                       refinement, result);
-  }
+  if (due.belief_score >= searchThreshold()) return std::nullopt;
+  due.views = views;
+  due.position = position;
+  return due;
 }
 
 double OrientationEstimator::searchThreshold() const {
@@ -535,6 +574,7 @@ void OrientationEstimator::reset() {
   refined_views_.clear();
   check_views_.clear();
   confirmed_fit_score_.reset();
+  pending_search_.reset();
 }
 
 Eigen::Vector4d OrientationEstimator::mapOrientation() const {

@@ -83,10 +83,24 @@ Identification identifyCandidate(
                                  }),
                   fitting.end());
   }
+  // Every fitting model first refines its own belief; the searches beyond the beliefs (the
+  // larger part of a model's cost) run only when no model explained the candidate at once.
   for (int m : fitting) {
     estimators[m] =
         std::make_unique<OrientationEstimator>(library.models()[m].bundle, instance_parameters);
-    updates[m] = estimators[m]->update(points, world_from_camera, time, scene);
+    updates[m] =
+        estimators[m]->update(points, world_from_camera, time, scene, BeliefSearch::kDeferred);
+  }
+  const bool explained_at_once = std::any_of(fitting.begin(), fitting.end(), [&](int m) {
+    return !updates[m].search_pending && updates[m].verified_score &&
+           *updates[m].verified_score >= instance_parameters.belief_check.search_below_score;
+  });
+  result.searched.assign(library.size(), false);
+  for (int m : fitting) {
+    if (!explained_at_once && updates[m].search_pending) {
+      updates[m] = estimators[m]->completeSearch(std::move(updates[m]));
+    }
+    result.searched[m] = updates[m].searched;
     result.scores[m] = updates[m].identity_score;
     if (result.scores[m] && !score_penalties.empty()) *result.scores[m] -= score_penalties[m];
   }
@@ -103,7 +117,8 @@ Identification identifyCandidate(
   } else {
     result.model = index;
     result.estimator = std::move(estimators[index]);
-    result.update = updates[index];
+    // Its state as after any update (a search skipped by the others' settling one runs now).
+    result.update = result.estimator->completeSearch(std::move(updates[index]));
   }
   return result;
 }

@@ -61,7 +61,7 @@ void checkSceneEstimatorParameters(const SceneEstimatorParameters& p) {
   checkSceneSegmentationParameters(p.segmentation);
   checkIdentificationParameters(p.identification);
   checkNonNegative(p.association_distance, "association_distance");
-  checkNonNegative(p.unknown_retry_angle, "unknown_retry_angle");
+  checkUnknownRetryParameters(p.unknown_retry);
   checkNonNegative(p.min_camera_translation, "min_camera_translation");
   checkNonNegative(p.min_camera_rotation, "min_camera_rotation");
   checkNonNegative(p.part_tolerance, "part_tolerance");
@@ -76,7 +76,9 @@ void checkSceneEstimatorParameters(const SceneEstimatorParameters& p) {
 }
 
 SceneEstimator::SceneEstimator(ModelLibrary library, SceneEstimatorParameters parameters)
-    : library_(std::move(library)), parameters_(std::move(parameters)) {
+    : library_(std::move(library)),
+      parameters_(std::move(parameters)),
+      unknowns_(parameters_.association_distance, parameters_.unknown_retry) {
   checkSceneEstimatorParameters(parameters_);
   // The candidate is the object: the instance estimators segment nothing.
   parameters_.instance.segmentation.mode = SegmentationMode::kNone;
@@ -184,8 +186,10 @@ SceneUpdate SceneEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
     if (part_of >= 0) {
       outcome.instance = instances_[part_of].id;
       outcome.note = "a part of " + instances_[part_of].name;
-    } else if (retriedTooSoon(outcome, world_from_camera)) {
-      outcome.note = "unknown from a nearby direction already";
+    } else if (std::string why = unknowns_.notRetriedBecause(outcome.centroid_world, outcome.sides,
+                                                             world_from_camera.translation());
+               !why.empty()) {
+      outcome.note = why;
     } else if (identifications >= parameters_.max_identifications) {
       outcome.note = "not identified: max_identifications reached on this frame";
     } else {
@@ -314,7 +318,8 @@ void SceneEstimator::weighIdentity(ObjectInstance& instance, const ViewUpdate& u
   instance.identity_probability = 1.0 / (1.0 + std::exp(-log_odds));
   if (instance.identity_probability < parameters_.identification.drop_probability) {
     // Remembered as unknown from here, so that it is not identified again from the same side.
-    unknowns_.push_back({instance.centroid_world, world_from_camera.translation()});
+    unknowns_.remember(instance.centroid_world, Eigen::Vector3d::Zero(),
+                       world_from_camera.translation());
   }
 }
 
@@ -331,23 +336,6 @@ void SceneEstimator::dropUnlikelyInstances(SceneUpdate* result) {
     }
     it = instances_.erase(it);
   }
-}
-
-bool SceneEstimator::retriedTooSoon(const CandidateOutcome& outcome,
-                                    const Eigen::Isometry3d& world_from_camera) const {
-  for (const UnknownObject& unknown : unknowns_) {
-    if ((unknown.centroid_world - outcome.centroid_world).norm() >=
-        parameters_.association_distance) {
-      continue;
-    }
-    const Eigen::Vector3d then = (unknown.camera_position - unknown.centroid_world).normalized();
-    const Eigen::Vector3d now =
-        (world_from_camera.translation() - outcome.centroid_world).normalized();
-    if (std::acos(std::clamp(then.dot(now), -1.0, 1.0)) < parameters_.unknown_retry_angle) {
-      return true;
-    }
-  }
-  return false;
 }
 
 void SceneEstimator::identifyWholeClusters(const pcl::PointCloud<pcl::PointXYZ>& cloud,
@@ -375,7 +363,12 @@ void SceneEstimator::identifyWholeClusters(const pcl::PointCloud<pcl::PointXYZ>&
     std::vector<FrameCandidate> union_candidate =
         frameCandidates(cloud, whole, world_from_camera, &merged);
     CandidateOutcome& outcome = merged.candidates.front();
-    if (retriedTooSoon(outcome, world_from_camera)) continue;
+    if (!unknowns_
+             .notRetriedBecause(outcome.centroid_world, outcome.sides,
+                                world_from_camera.translation())
+             .empty()) {
+      continue;
+    }
     ++*identifications;
     identify(union_candidate.front(), scene, world_from_camera, time, &outcome, false);
     if (outcome.instance < 0) continue;
@@ -414,15 +407,7 @@ void SceneEstimator::identify(const FrameCandidate& candidate, const SceneDepth&
     outcome->note = identification.reason;
     if (!candidate.allowed.empty()) outcome->note += " (only its class's model was tried)";
     if (!remember_unknown) return;
-    // Forget an older try of the same object: this one is from the newer direction.
-    unknowns_.erase(
-        std::remove_if(unknowns_.begin(), unknowns_.end(),
-                       [&](const UnknownObject& unknown) {
-                         return (unknown.centroid_world - outcome->centroid_world).norm() <
-                                parameters_.association_distance;
-                       }),
-        unknowns_.end());
-    unknowns_.push_back({outcome->centroid_world, world_from_camera.translation()});
+    unknowns_.remember(outcome->centroid_world, outcome->sides, world_from_camera.translation());
     return;
   }
   ObjectInstance instance;

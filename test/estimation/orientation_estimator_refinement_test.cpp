@@ -169,6 +169,44 @@ TEST_F(EstimatorRefinementTest, AViewTheSureBeliefCannotExplainRebuildsIt) {
   EXPECT_GT(rotationErrorDeg(unchecked.mapOrientation(), truth()), 90.0);
 }
 
+// The scene layer defers the search (BeliefSearch::kDeferred) and completes it only when no
+// model explains a candidate at once: completed, it must do what it does at once.
+TEST_F(EstimatorRefinementTest, ADeferredSearchCompletedRebuildsTheBeliefAsOneAtOnce) {
+  Eigen::Isometry3d upside_down = Eigen::Isometry3d::Identity();
+  upside_down.linear() = Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  const Eigen::Isometry3d wrong = worldFromObject() * upside_down;
+  const auto [first, world_from_camera] = handleView();
+  const Eigen::Isometry3d reported = wrong * worldFromObject().inverse() * world_from_camera;
+  const auto [side, side_reported] = viewFromSide(wrong);
+  const auto [second, second_pose] = viewFromAbove(worldFromObject());
+  OrientationEstimator at_once(model(), withIcp());
+  OrientationEstimator deferred(model(), withIcp());
+  for (OrientationEstimator* estimator : {&at_once, &deferred}) {
+    ASSERT_TRUE(estimator->update(first, reported).updated);
+    ASSERT_TRUE(estimator->update(side, side_reported).updated);
+  }
+  const ViewUpdate searched = at_once.update(second, second_pose);
+  ASSERT_TRUE(searched.searched);
+
+  const ViewUpdate pending =
+      deferred.update(second, second_pose, std::nullopt, {}, BeliefSearch::kDeferred);
+  ASSERT_TRUE(pending.updated) << pending.skip_reason;
+  EXPECT_TRUE(pending.search_pending);
+  EXPECT_FALSE(pending.searched);
+  EXPECT_GT(rotationErrorDeg(deferred.mapOrientation(), truth()), 90.0) << "searched already";
+  const ViewUpdate completed = deferred.completeSearch(pending);
+  EXPECT_FALSE(completed.search_pending);
+  EXPECT_TRUE(completed.searched);
+  EXPECT_EQ(completed.rebuild_reason, searched.rebuild_reason);
+  EXPECT_EQ(completed.refined_poses, searched.refined_poses);
+  EXPECT_EQ(completed.verified_score, searched.verified_score);
+  EXPECT_LT(rotationErrorDeg(deferred.mapOrientation(), at_once.mapOrientation()), 1e-6);
+  EXPECT_EQ(deferred.updateCount(), at_once.updateCount());
+  // Nothing is pending any more: completing again changes nothing.
+  EXPECT_EQ(deferred.completeSearch(completed).verified_score, completed.verified_score);
+  EXPECT_EQ(deferred.updateCount(), at_once.updateCount());
+}
+
 TEST_F(EstimatorRefinementTest, ViewsTheBeliefExplainsNeverRebuildIt) {
   const auto [first, world_from_camera] = handleView();
   const auto [second, second_pose] = viewFromAbove(worldFromObject());

@@ -2,9 +2,15 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <numeric>
+#include <random>
 
+#include "support/mug_scene.h"
+#include "support/quick_mug_model.h"
 #include "view_direction_classification/common/error.h"
+#include "view_direction_classification/geometry/depth_renderer.h"
+#include "view_direction_classification/geometry/primitive_meshes.h"
 
 namespace vdc {
 namespace {
@@ -63,6 +69,58 @@ TEST(IdentityEvidence, AViewThatVerifiesWellSupportsTheModelAndOneThatDoesNotOpp
   // Capped: one view never decides alone.
   EXPECT_EQ(identityEvidence(1.0, parameters), parameters.max_view_evidence);
   EXPECT_EQ(identityEvidence(-1.0, parameters), -parameters.max_view_evidence);
+}
+
+// The quick mug's classifier with its surface turned upside down: a model of the mug's size whose
+// belief, on a view of the upright mug, is of poses its surface does not fit, so that only a
+// search beyond the belief could make it explain the mug.
+std::shared_ptr<const ModelBundle> upsideDownMug() {
+  ModelBundle copy = *test::quickMugModel();
+  const Eigen::Matrix3d turn = Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  for (Eigen::Vector3f& p : copy.surface_points) p = turn.cast<float>() * p;
+  for (Eigen::Vector3f& n : copy.surface_normals) n = turn.cast<float>() * n;
+  Eigen::AlignedBox3d bounds;
+  for (const Eigen::Vector3f& p : copy.surface_points) bounds.extend(p.cast<double>());
+  copy.bounds = bounds;
+  return std::make_shared<const ModelBundle>(std::move(copy));
+}
+
+// One object alone, seen from the side and above at 0.7 m (camera frame), with the camera pose.
+std::pair<pcl::PointCloud<pcl::PointXYZ>, Eigen::Isometry3d> viewOf(const TriangleMesh& mesh) {
+  Scene scene;
+  scene.object = {mesh, test::worldFromMug()};
+  const Eigen::Isometry3d camera_from_world =
+      test::cameraFromWorld(Eigen::Vector3d(1.0, 0.3, 0.8).normalized(), 0.7);
+  std::mt19937 rng(3);
+  return {DepthRenderer(sceneMesh(scene)).render(camera_from_world, DepthNoiseModel{true}, &rng),
+          camera_from_world.inverse()};
+}
+
+Identification identifyAlone(const TriangleMesh& mesh) {
+  const ModelLibrary library({{"mug", test::quickMugModel()}, {"flipped", upsideDownMug()}});
+  EstimatorParameters instance;
+  instance.segmentation.mode = SegmentationMode::kNone;
+  const auto [points, world_from_camera] = viewOf(mesh);
+  return identifyCandidate(library, instance, points, Eigen::Vector3d(0.11, 0.09, 0.08), {},
+                           world_from_camera, 0.0, IdentificationParameters());
+}
+
+TEST(IdentifyCandidate, AModelThatExplainsTheCandidateAtOnceSparesTheOthersTheirSearch) {
+  const Identification mug = identifyAlone(makeMug());
+  ASSERT_EQ(mug.model, 0) << mug.reason;
+  ASSERT_EQ(mug.searched.size(), 2u);
+  EXPECT_FALSE(mug.searched[0]) << "the mug's own belief explains it";
+  EXPECT_FALSE(mug.searched[1]) << "the flipped model searched though the mug explained it";
+  EXPECT_FALSE(mug.update.search_pending);
+}
+
+TEST(IdentifyCandidate, WhenNoModelExplainsTheCandidateAtOnceEveryModelSearches) {
+  // A box of the mug's size: neither model's belief explains it.
+  const Identification box = identifyAlone(makeBoxMesh(Eigen::Vector3d(0.09, 0.08, 0.10)));
+  EXPECT_EQ(box.model, -1);
+  ASSERT_EQ(box.searched.size(), 2u);
+  EXPECT_TRUE(box.searched[0]);
+  EXPECT_TRUE(box.searched[1]);
 }
 
 }  // namespace

@@ -156,7 +156,18 @@ struct ViewUpdate {
   // better, and the belief was rebuilt from this view (says by how much).
   bool searched = false;
   std::string rebuild_reason;
+  // Updated with BeliefSearch::kDeferred: the search was due and waits for completeSearch();
+  // refinement's own poses are not fused yet, and verified_score and identity_score are theirs.
+  bool search_pending = false;
   UpdateTiming timing;
+};
+
+// When update() runs a search beyond the belief that is due (belief_check.h).
+enum class BeliefSearch {
+  kWhenDue,  // at once, within update()
+  // Left pending for completeSearch(): the scene layer tries a candidate against every model
+  // that fits it and searches beyond their beliefs only when none explains it at once.
+  kDeferred,
 };
 
 // The paper's online estimator without ROS (doc/method.md sections 5, 8-10): one depth cloud of the
@@ -180,10 +191,18 @@ class OrientationEstimator {
   // verification_scene: what else the camera saw (camera frame), when `cloud` is already the
   // object (segmentation `none`, e.g. one candidate of a scene): refinement verifies against it
   // (RefinementView::scene). Empty: the scene segmentation leaves (verificationScene).
+  // search: kDeferred leaves a due search pending (ViewUpdate::search_pending) for
+  // completeSearch(); the next update() or reset() completes or drops it first.
   ViewUpdate update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
                     const Eigen::Isometry3d& world_from_camera,
                     std::optional<double> time = std::nullopt,
-                    const SceneDepth& verification_scene = {});
+                    const SceneDepth& verification_scene = {},
+                    BeliefSearch search = BeliefSearch::kWhenDue);
+  // Runs the search an update() with BeliefSearch::kDeferred left pending and then fuses what
+  // refinement kept, as update() would have: `update` (that update's result) comes back
+  // completed (searched, rebuild_reason, refined_poses, the scores and the refinement time).
+  // Without a pending search it comes back as it was.
+  ViewUpdate completeSearch(ViewUpdate update);
   // Back to the uniform prior (forgets the fused views, the position and the track too).
   void reset();
   // New settings for the frames to come (a live reconfigure): checked as the constructor checks
@@ -235,17 +254,30 @@ class OrientationEstimator {
   // measurement: the view's, in the fixed frame (a rebuilt belief starts from it);
   // line_of_sight: q_CL, the camera frame's turn onto the ray to the object.
   // `scene`: what else the camera saw (verificationScene; null: the object's points alone).
+  // search: BeliefSearch::kDeferred leaves a due search and the fusion after it pending.
   void refineAfterFusion(const pcl::PointCloud<pcl::PointXYZ>& object_points,
                          const SceneDepth& scene, const Eigen::Isometry3d& world_from_camera,
                          const BinghamMixture& measurement, const Eigen::Vector4d& line_of_sight,
-                         ViewUpdate* result);
+                         BeliefSearch search, ViewUpdate* result);
+  // A search beyond the belief that is due: everything searchBeyondBelief needs.
+  struct DueSearch {
+    std::vector<RefinementView> views;
+    Eigen::Vector3d position = Eigen::Vector3d::Zero();
+    Eigen::Isometry3d belief_pose = Eigen::Isometry3d::Identity();
+    double belief_score = 0.0;
+    BinghamMixture measurement;
+    Eigen::Vector4d line_of_sight = Eigen::Vector4d(1, 0, 0, 0);
+    RefinementResult refinement;  // the belief's own, replaced by the search's when it wins
+  };
   // Keeps `view` (thinned) among the latest check_views and, where the belief's best pose
   // (refinement's, or without one the MAP at `position`) verifies below searchThreshold() on
-  // it, searches beyond the belief (belief_check.h).
-  void checkBeliefOnView(const RefinementView& view, const std::vector<RefinementView>& views,
-                         const Eigen::Vector3d& position, const BinghamMixture& measurement,
-                         const Eigen::Vector4d& line_of_sight, RefinementResult* refinement,
-                         ViewUpdate* result);
+  // it, returns the search that is due (belief_check.h).
+  std::optional<DueSearch> searchDueOnView(const RefinementView& view,
+                                           const std::vector<RefinementView>& views,
+                                           const Eigen::Vector3d& position,
+                                           const RefinementResult& refinement);
+  // The view's kept poses fused as a measurement; the position estimate and the scores follow.
+  void fuseRefinement(const RefinementResult& refinement, ViewUpdate* result);
   // search_below_score, or lower once a search on this camera's views found nothing better
   // than a belief pose that verified at confirmed_fit_score_: rebuild_margin below that.
   double searchThreshold() const;
@@ -292,6 +324,8 @@ class OrientationEstimator {
   // stereo camera: 0.90). Later views search only when they fit clearly worse. Cleared with the
   // belief.
   std::optional<double> confirmed_fit_score_;
+  // Left by update() with BeliefSearch::kDeferred until completeSearch().
+  std::optional<DueSearch> pending_search_;
   // Only when selection.min_information_gain > 0.
   std::shared_ptr<const ViewUtilityScorer> gain_scorer_;
   // The MAP costs a search over every component: computed once per belief, on first request;

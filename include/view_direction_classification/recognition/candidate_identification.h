@@ -61,6 +61,8 @@ struct Identification {
   std::unique_ptr<OrientationEstimator> estimator;
   ViewUpdate update;   // that estimator's update
   std::string reason;  // why the candidate is unknown (empty when identified)
+  // Per library model: whether its search beyond the belief ran (belief_check.h).
+  std::vector<bool> searched;
 };
 
 // Identifies one candidate: a fresh estimator of each model whose size fits (instance settings,
@@ -69,6 +71,9 @@ struct Identification {
 // probabilities, each lowered by its entry of score_penalties (per library model, empty: none;
 // ShapeAlternative). points and scene in the camera frame. allowed (per library model; empty:
 // all) leaves the other models untried: a detector's class names the one model it may be.
+// The models' searches beyond their beliefs (belief_check.h) run only when no model's own
+// belief gave a pose verifying at the search's threshold (search_below_score): a model that
+// explains the candidate at once settles what the others' searches could only lower.
 Identification identifyCandidate(
     const ModelLibrary& library, const EstimatorParameters& instance_parameters,
     const pcl::PointCloud<pcl::PointXYZ>& points, const Eigen::Vector3d& candidate_sides,

@@ -17,6 +17,7 @@
 #include "view_direction_classification/recognition/instance_explanation.h"
 #include "view_direction_classification/recognition/model_library.h"
 #include "view_direction_classification/recognition/shape_alternative.h"
+#include "view_direction_classification/recognition/unknown_objects.h"
 #include "view_direction_classification/scene/scene_segmentation.h"
 
 namespace vdc {
@@ -33,10 +34,8 @@ struct SceneEstimatorParameters {
   // Candidates identified per frame at most (the largest first): identification runs an
   // estimator per fitting model, the frame's main cost.
   int max_identifications = 10;
-  // A candidate found unknown is tried again only once the camera sees it from a direction at
-  // least this far [rad] from where it was tried (an object no model explains from one side is
-  // not re-identified on every frame).
-  double unknown_retry_angle = 0.5;
+  // When a candidate found unknown is tried again (unknown_objects.h).
+  UnknownRetryParameters unknown_retry;
   // A frame is segmented only when the camera moved at least this far [m] or turned this much
   // [rad] since the last segmented frame: a still camera shows nothing new, and a frame that is
   // not segmented costs next to nothing.
@@ -136,10 +135,6 @@ class SceneEstimator {
   bool resetInstance(int id);
 
  private:
-  struct UnknownObject {
-    Eigen::Vector3d centroid_world;
-    Eigen::Vector3d camera_position;  // where it was last tried from
-  };
   // One candidate of the frame being processed.
   struct FrameCandidate {
     pcl::PointCloud<pcl::PointXYZ> points;  // camera frame
@@ -180,19 +175,17 @@ class SceneEstimator {
                              const SceneSegments& segments, std::vector<FrameCandidate>& candidates,
                              const SceneDepth& scene, const Eigen::Isometry3d& world_from_camera,
                              std::optional<double> time, int* identifications, SceneUpdate* result);
-  // remember_unknown: an unknown outcome is remembered (retriedTooSoon) for its centroid.
+  // remember_unknown: an unknown outcome is remembered (unknowns_) for its centroid.
   void identify(const FrameCandidate& candidate, const SceneDepth& scene,
                 const Eigen::Isometry3d& world_from_camera, std::optional<double> time,
                 CandidateOutcome* outcome, bool remember_unknown = true);
-  bool retriedTooSoon(const CandidateOutcome& outcome,
-                      const Eigen::Isometry3d& world_from_camera) const;
 
   ModelLibrary library_;
   SceneEstimatorParameters parameters_;
   std::vector<std::unique_ptr<InstanceExplanation>> explanations_;  // per library model
   std::unique_ptr<ShapeAlternative> shapes_;
   std::vector<ObjectInstance> instances_;
-  std::vector<UnknownObject> unknowns_;
+  UnknownObjects unknowns_;
   std::vector<int> instances_named_;  // per model: instances named so far
   int next_id_ = 1;
   std::optional<Eigen::Isometry3d> last_segmented_camera_;
