@@ -200,6 +200,25 @@ TEST(InstancePresence, AMugMovedThirtyCentimetresKeepsItsInstance) {
   EXPECT_EQ(moved, 1);
 }
 
+// Gone is not forgotten (forget_gone_after 0): put down elsewhere later, it is known again.
+TEST(InstancePresence, AGoneMugPutDownElsewhereLaterIsItsInstanceAgain) {
+  SceneEstimator estimator = makeEstimator();
+  const int id = mugFoundAtA(estimator).id;
+  const Scene empty = tableWith({});
+  look(estimator, empty, worldFromCamera(kView1), 1.0);
+  look(estimator, empty, worldFromCamera(kView2), 2.0);
+  ASSERT_EQ(estimator.instance(id)->presence.state, InstanceState::kGone);
+  const Eigen::Vector3d between = kMugPosition + Eigen::Vector3d(0.0, 0.15, 0.0);
+  look(estimator, tableWith({mugAt(kMugAtB)}),
+       worldFromCamera(Eigen::Vector3d(1.0, 0.1, 0.9), between, 0.8), 30.0);
+  ASSERT_EQ(estimator.instances().size(), 1u) << "the mug came back as a second instance";
+  const ObjectInstance& mug = estimator.instances().front();
+  EXPECT_EQ(mug.id, id);
+  EXPECT_EQ(mug.presence.state, InstanceState::kPresent);
+  EXPECT_FALSE(mug.presence.gone_since.has_value());
+  EXPECT_TRUE(estimator.confirmed(mug));
+}
+
 TEST(InstancePresence, AMugMovedTenCentimetresIsFollowedNotDuplicated) {
   SceneEstimator estimator = makeEstimator();
   const int id = mugFoundAtA(estimator).id;
