@@ -89,7 +89,7 @@ GetHeatmap::Request heatmapRequest(FuzzedDataProvider& data, int views) {
 }
 
 // An ~instances message: a few instances of the loaded model, of one the server lacks, or of
-// any name, with fuzzed poses, beliefs and cones; now and then in another frame.
+// any name, with fuzzed poses, beliefs, cones and states; now and then in another frame.
 view_direction_classification::ObjectInstances instancesMessage(FuzzedDataProvider& data) {
   view_direction_classification::ObjectInstances message;
   message.header.frame_id = data.ConsumeBool() ? "world" : vdc::fuzz::fuzzedFrame(data);
@@ -107,6 +107,8 @@ view_direction_classification::ObjectInstances instancesMessage(FuzzedDataProvid
     instance.belief = vdc::fuzz::fuzzedBinghamMixtureMsg(data);
     instance.cone90_deg =
         data.ConsumeBool() ? data.ConsumeFloatingPointInRange(0.0, 180.0) : fuzzedDouble(data);
+    // Any value: PRESENT, GONE, or one no estimator sends.
+    instance.state = data.ConsumeIntegral<std::uint8_t>();
     message.instances.push_back(instance);
   }
   return message;

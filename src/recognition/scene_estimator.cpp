@@ -65,6 +65,13 @@ void checkSceneEstimatorParameters(const SceneEstimatorParameters& p) {
   checkNonNegative(p.min_camera_translation, "min_camera_translation");
   checkNonNegative(p.min_camera_rotation, "min_camera_rotation");
   checkNonNegative(p.part_tolerance, "part_tolerance");
+  checkNonNegative(p.forget_gone_after, "forget_gone_after");
+  if (p.absent_views < 1) {
+    throw Error(
+        "scene estimator absent_views must be >= 1 (frames of absence before an instance "
+        "is gone), got " +
+        std::to_string(p.absent_views));
+  }
   if (!(p.min_explained_fraction >= 0.0 && p.min_explained_fraction <= 1.0)) {
     throw Error("scene estimator min_explained_fraction must be in [0, 1], got " +
                 std::to_string(p.min_explained_fraction));
@@ -93,6 +100,9 @@ SceneEstimator::SceneEstimator(ModelLibrary library, SceneEstimatorParameters pa
       library_, parameters_.instance.refinement_parameters.verification,
       parameters_.identification.unknown_score);
   label_model_index_ = labelModelIndices(library_, parameters_.label_models);
+  presence_ = std::make_unique<InstancePresence>(
+      library_, parameters_.instance.refinement_parameters.verification, parameters_.absent_views,
+      parameters_.forget_gone_after);
 }
 
 const ObjectInstance* SceneEstimator::instance(int id) const {
@@ -173,7 +183,13 @@ SceneUpdate SceneEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
   std::vector<FrameCandidate> candidates =
       frameCandidates(cloud, segments, world_from_camera, &result);
   associate(candidates, result);
+  std::vector<int> associated;  // ids: updateAssignedInstances may drop instances
+  for (const FrameCandidate& candidate : candidates) {
+    if (candidate.instance >= 0) associated.push_back(instances_[candidate.instance].id);
+  }
   updateAssignedInstances(candidates, scene, world_from_camera, time, &result);
+  // Before identification, which takes an instance whose place was seen free for a moved one.
+  result.gone = presence_->observe(instances_, associated, scene, world_from_camera, time);
   // The rest, largest first (segmentScene's order): new instances, parts of the instances found
   // on this frame, or unknown.
   int identifications = 0;
@@ -197,6 +213,7 @@ SceneUpdate SceneEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
       identify(candidates[c], scene, world_from_camera, time, &outcome);
     }
   }
+  result.forgotten = presence_->forgetGone(instances_, time);
   result.total_ms = millisecondsSince(start);
   return result;
 }
@@ -370,16 +387,17 @@ void SceneEstimator::identifyWholeClusters(const pcl::PointCloud<pcl::PointXYZ>&
       continue;
     }
     ++*identifications;
-    identify(union_candidate.front(), scene, world_from_camera, time, &outcome, false);
-    if (outcome.instance < 0) continue;
-    // The largest piece reports the new instance, the others are its parts.
-    const int index = static_cast<int>(instances_.size()) - 1;
+    const int index =
+        identify(union_candidate.front(), scene, world_from_camera, time, &outcome, false);
+    if (index < 0) continue;
+    // The largest piece reports the instance, the others are its parts.
     for (std::size_t k = 0; k < members.size(); ++k) {
       candidates[members[k]].instance = index;
       CandidateOutcome& piece = result->candidates[members[k]];
       piece.instance = outcome.instance;
       if (k == 0) {
-        piece.new_instance = true;
+        piece.new_instance = outcome.new_instance;
+        piece.moved = outcome.moved;
         piece.probability = outcome.probability;
         piece.update = outcome.update;
         piece.note =
@@ -391,10 +409,9 @@ void SceneEstimator::identifyWholeClusters(const pcl::PointCloud<pcl::PointXYZ>&
   }
 }
 
-void SceneEstimator::identify(const FrameCandidate& candidate, const SceneDepth& scene,
-                              const Eigen::Isometry3d& world_from_camera,
-                              std::optional<double> time, CandidateOutcome* outcome,
-                              bool remember_unknown) {
+int SceneEstimator::identify(const FrameCandidate& candidate, const SceneDepth& scene,
+                             const Eigen::Isometry3d& world_from_camera, std::optional<double> time,
+                             CandidateOutcome* outcome, bool remember_unknown) {
   // A detector's class is the evidence against an unknown simple shape: no penalty then.
   const std::vector<double> penalties = candidate.allowed.empty()
                                             ? shapes_->penalties(candidate.points, candidate.up)
@@ -406,25 +423,39 @@ void SceneEstimator::identify(const FrameCandidate& candidate, const SceneDepth&
   if (identification.model < 0) {
     outcome->note = identification.reason;
     if (!candidate.allowed.empty()) outcome->note += " (only its class's model was tried)";
-    if (!remember_unknown) return;
+    if (!remember_unknown) return -1;
     unknowns_.remember(outcome->centroid_world, outcome->sides, world_from_camera.translation());
-    return;
+    return -1;
   }
-  ObjectInstance instance;
-  instance.id = next_id_++;
-  instance.model = identification.model;
-  instance.name = library_.models()[instance.model].name + "_" +
-                  std::to_string(++instances_named_[instance.model]);
+  // A moved instance keeps its id; the fresh estimator that fused this view replaces its belief
+  // (the object may have been turned on the way).
+  const int index = instanceFor(identification.model, outcome);
+  ObjectInstance& instance = instances_[index];
   instance.estimator = std::move(identification.estimator);
   instance.identity = identification.probabilities;
   instance.identity_probability = identification.probability;
   instance.centroid_world = outcome->centroid_world;
   instance.last_seen = time;
-  instance.frames_seen = 1;
+  ++instance.frames_seen;
+  instance.presence = Presence{};
   outcome->instance = instance.id;
-  outcome->new_instance = true;
   outcome->update = identification.update;
-  instances_.push_back(std::move(instance));
+  return index;
+}
+
+int SceneEstimator::instanceFor(int model, CandidateOutcome* outcome) {
+  const int moved = presence_->movedInstance(instances_, model, outcome->centroid_world);
+  outcome->moved = moved >= 0;
+  outcome->new_instance = moved < 0;
+  if (moved >= 0) {
+    outcome->note = instances_[moved].name + " moved here: its place was seen free";
+    return moved;
+  }
+  ObjectInstance& added = instances_.emplace_back();
+  added.id = next_id_++;
+  added.model = model;
+  added.name = library_.models()[model].name + "_" + std::to_string(++instances_named_[model]);
+  return static_cast<int>(instances_.size()) - 1;
 }
 
 }  // namespace vdc

@@ -15,15 +15,23 @@ double spreadOf(const ObjectInstanceMsg& instance) {
                                          : instance.cone90_deg;
 }
 
-const ObjectInstanceMsg& mostUncertain(const ObjectInstancesMsg& latest) {
-  const ObjectInstanceMsg* chosen = &latest.instances.front();
+bool gone(const ObjectInstanceMsg& instance) { return instance.state == ObjectInstanceMsg::GONE; }
+
+// Among the instances present: a gone one's place was seen free, no view of it helps.
+const ObjectInstanceMsg* mostUncertain(const ObjectInstancesMsg& latest) {
+  const ObjectInstanceMsg* chosen = nullptr;
   for (const ObjectInstanceMsg& instance : latest.instances) {
+    if (gone(instance)) continue;
+    if (chosen == nullptr) {
+      chosen = &instance;
+      continue;
+    }
     const double spread = spreadOf(instance), chosen_spread = spreadOf(*chosen);
     if (spread > chosen_spread || (spread == chosen_spread && instance.id < chosen->id)) {
       chosen = &instance;
     }
   }
-  return *chosen;
+  return chosen;
 }
 
 std::string knownNames(const ObjectInstancesMsg& latest) {
@@ -45,9 +53,20 @@ const ObjectInstanceMsg& chooseInstance(const ObjectInstancesMsg* latest,
   if (latest->instances.empty()) {
     throw Error("The latest instances message has no instance" + nothing_to_plan);
   }
-  if (wanted == kMostUncertain) return mostUncertain(*latest);
+  if (wanted == kMostUncertain) {
+    const ObjectInstanceMsg* chosen = mostUncertain(*latest);
+    if (chosen == nullptr) {
+      throw Error("Every instance of the latest instances message is gone" + nothing_to_plan);
+    }
+    return *chosen;
+  }
   for (const ObjectInstanceMsg& instance : latest->instances) {
-    if (instance.name == wanted) return instance;
+    if (instance.name != wanted) continue;
+    if (gone(instance)) {
+      throw Error("Instance '" + wanted +
+                  "' is gone: the camera saw its place free, so there is no view to plan for it.");
+    }
+    return instance;
   }
   throw Error("Unknown instance '" + wanted + "': the latest instances are " + knownNames(*latest) +
               " (or ask for \"" + kMostUncertain + "\").");

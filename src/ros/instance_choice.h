@@ -18,8 +18,9 @@ inline constexpr const char* kMostUncertain = "most_uncertain";
 
 // The instance `wanted` names among `latest` (the latest ~instances; nullptr: none received yet):
 // the one of that name, or for kMostUncertain the one with the widest cone90_deg (the lowest id
-// among equals, so the answer does not depend on the message's order). Throws vdc::Error saying
-// why for no message yet, a message without instances or an unknown name (listing the known).
+// among equals, so the answer does not depend on the message's order), among the instances not
+// GONE. Throws vdc::Error saying why for no message yet, a message without instances (or with only
+// gone ones, for kMostUncertain), a gone instance or an unknown name (listing the known).
 const ObjectInstanceMsg& chooseInstance(const ObjectInstancesMsg* latest,
                                         const std::string& wanted);
 

@@ -266,10 +266,21 @@ void SceneEstimatorRos::processCloud(const sensor_msgs::PointCloud2& cloud) {
   last_unknown_ = 0;
   for (const CandidateOutcome& candidate : update.candidates) {
     if (candidate.instance < 0) ++last_unknown_;
+    if (candidate.moved) {
+      ROS_INFO_NAMED(private_node_.getNamespace(), "%s: %s", private_node_.getNamespace().c_str(),
+                     candidate.note.c_str());
+    }
   }
-  instances_ = 0;
+  instances_ = gone_instances_ = 0;
   for (const ObjectInstance& instance : estimator_->instances()) {
     if (estimator_->confirmed(instance)) ++instances_;
+    if (instance.presence.state == InstanceState::kGone) ++gone_instances_;
+  }
+  for (int id : update.gone) {
+    const ObjectInstance* instance = estimator_->instance(id);
+    if (instance == nullptr) continue;
+    ROS_INFO_NAMED(private_node_.getNamespace(), "%s: %s is gone: its place was seen free",
+                   private_node_.getNamespace().c_str(), instance->name.c_str());
   }
   last_segmentation_ms_ = update.segmentation_ms;
   last_total_ms_ = update.total_ms;
@@ -289,8 +300,10 @@ void SceneEstimatorRos::publishInstances(const std_msgs::Header& cloud_header) {
   for (const ObjectInstance& instance : estimator_->instances()) {
     const std::optional<InstancePose> pose = poseOf(instance);
     // An instance the views no longer support well enough is not published (nor its tf frame)
-    // until they do again, or it is dropped.
-    if (!pose || !estimator_->confirmed(instance)) continue;
+    // until they do again, or it is dropped. A gone one is listed with its last pose and its
+    // state, but has no tf frame and no markers: nothing stands there.
+    if (!pose || !estimator_->identified(instance)) continue;
+    const bool gone = instance.presence.state == InstanceState::kGone;
     const OrientationEstimator& estimator = *instance.estimator;
     ObjectInstanceMsg entry;
     entry.id = static_cast<std::uint32_t>(instance.id);
@@ -312,7 +325,12 @@ void SceneEstimatorRos::publishInstances(const std_msgs::Header& cloud_header) {
     entry.cone90_deg = entry.belief.cone90_deg = estimator.spread().cone90 * 180.0 / M_PI;
     entry.converged = entry.belief.converged = entry.cone90_deg <= parameters_.converged_cone90_deg;
     entry.last_seen = instance.last_seen ? ros::Time(*instance.last_seen) : ros::Time();
+    entry.state = gone ? ObjectInstanceMsg::GONE : ObjectInstanceMsg::PRESENT;
+    if (gone && instance.presence.gone_since) {
+      entry.gone_since = ros::Time(*instance.presence.gone_since);
+    }
     message->instances.push_back(entry);
+    if (gone) continue;
 
     const visualization_msgs::MarkerArray axes = makeBeliefMarkers(
         header, instance.name, pose->position, pose->orientation, {}, parameters_.marker_length);
@@ -344,6 +362,7 @@ void SceneEstimatorRos::publishPrimary(const view_direction_classification::Obje
                                        std::vector<geometry_msgs::TransformStamped>* transforms) {
   const ObjectInstanceMsg* primary = nullptr;
   for (const ObjectInstanceMsg& instance : all.instances) {
+    if (instance.state == ObjectInstanceMsg::GONE) continue;
     if (primary == nullptr || instance.views_fused > primary->views_fused) primary = &instance;
   }
   if (primary == nullptr) return;
@@ -449,6 +468,7 @@ void SceneEstimatorRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& st
   status.add("clouds dropped (a newer one arrived first)", dropped_);
   status.add("clouds skipped (bad input or no tf)", skipped_);
   status.add("instances (confirmed)", instances_);
+  status.add("instances gone (their place seen free)", gone_instances_);
   status.add("last candidates", last_candidates_);
   status.add("last candidates unknown or not tried", last_unknown_);
   status.add("last skip reason", last_skip_reason_.empty() ? "none" : last_skip_reason_);

@@ -102,7 +102,7 @@ class SceneEstimatorRos {
   std::mutex statistics_mutex_;
   std::uint64_t received_ = 0, segmented_ = 0, still_ = 0, dropped_ = 0, skipped_ = 0;
   std::uint64_t labels_received_ = 0;
-  int last_candidates_ = 0, last_unknown_ = 0, instances_ = 0;
+  int last_candidates_ = 0, last_unknown_ = 0, instances_ = 0, gone_instances_ = 0;
   std::string last_skip_reason_;
   std::string last_segmentation_note_;  // clusters dropped, no support found
   double last_segmentation_ms_ = 0, last_total_ms_ = 0;

@@ -48,6 +48,9 @@ ParameterTable<SceneRosParameters> makeTable() {
            numberIn(0.0, 1.0, true))
       .add("identity_unknown_score", identification(&IdentificationParameters::unknown_score),
            numberIn(-1.0, 1.0, true))
+      .add("absent_views", scene(&S::absent_views), integerAtLeast(1))
+      .add("forget_gone_after", scene(&S::forget_gone_after),
+           numberAtLeast(0.0, "0: gone instances are kept"))
       .add("min_camera_translation", scene(&S::min_camera_translation), numberAtLeast(0.0))
       .add("min_camera_rotation", scene(&S::min_camera_rotation), numberAtLeast(0.0))
       .add("label_class_divisor", segmentation(&SceneSegmentationParameters::label_class_divisor),

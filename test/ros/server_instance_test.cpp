@@ -82,6 +82,17 @@ TEST(InstanceChoice, AnUnknownNameIsRefusedListingTheKnownOnes) {
   EXPECT_NE(message.find("mug_1, box_1, mug_2"), std::string::npos) << message;
 }
 
+// A gone instance's place was seen free: no view of it helps, by name or as the most uncertain.
+TEST(InstanceChoice, AGoneInstanceIsNeitherChosenByNameNorAsTheMostUncertain) {
+  ObjectInstancesMsg latest = scene();
+  latest.instances[2].state = ObjectInstanceMsg::GONE;  // mug_2, which most_uncertain picks
+  EXPECT_EQ(chooseInstance(&latest, kMostUncertain).name, "box_1");
+  const std::string message = refusalOf(&latest, "mug_2");
+  EXPECT_NE(message.find("'mug_2' is gone"), std::string::npos) << message;
+  for (auto& instance : latest.instances) instance.state = ObjectInstanceMsg::GONE;
+  EXPECT_NE(refusalOf(&latest, kMostUncertain).find("is gone"), std::string::npos);
+}
+
 TEST(InstanceChoice, NoMessageOrAnEmptyListIsRefused) {
   EXPECT_NE(refusalOf(nullptr, "mug_1").find("No instances received yet"), std::string::npos);
   const ObjectInstancesMsg empty;

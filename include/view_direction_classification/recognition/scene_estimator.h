@@ -15,6 +15,7 @@
 #include "view_direction_classification/estimation/orientation_estimator.h"
 #include "view_direction_classification/recognition/candidate_identification.h"
 #include "view_direction_classification/recognition/instance_explanation.h"
+#include "view_direction_classification/recognition/instance_presence.h"
 #include "view_direction_classification/recognition/model_library.h"
 #include "view_direction_classification/recognition/shape_alternative.h"
 #include "view_direction_classification/recognition/unknown_objects.h"
@@ -51,6 +52,13 @@ struct SceneEstimatorParameters {
   // class's model, and one of a class without an entry is ignored (a detector sees chairs and
   // people too); when empty, every model whose size fits is tried, as for geometric candidates.
   std::map<std::int64_t, std::string> label_models;
+  // Change (InstancePresence): an instance no candidate was associated with is marked gone after
+  // this many segmented frames in a row (each taken after the camera moved) showed free space
+  // where its surface should be; hidden or out of view is no evidence. >= 1.
+  int absent_views = 2;
+  // [s] A gone instance is forgotten this long after it was marked gone (frames with a time);
+  // 0: kept, so that the object is known again, under its id, wherever it comes back.
+  double forget_gone_after = 0.0;
 };
 
 // Throws vdc::Error naming the first bad parameter.
@@ -69,6 +77,7 @@ struct ObjectInstance {
   Eigen::Vector3d centroid_world = Eigen::Vector3d::Zero();  // of its points when last seen
   std::optional<double> last_seen;                           // that frame's time
   int frames_seen = 0;
+  Presence presence;  // present, or gone: its place was seen free (InstancePresence)
 };
 
 // What became of one candidate of a frame.
@@ -78,6 +87,7 @@ struct CandidateOutcome {
   int points = 0;
   int instance = -1;  // the instance's id (-1: unknown, or not tried)
   bool new_instance = false;
+  bool moved = false;        // identified as a known instance that was out of place: moved here
   bool dropped = false;      // its instance's identity fell below drop_probability: forgotten
   double probability = 0.0;  // of the instance's model at this identification (0 if associated)
   std::string note;          // why it is unknown or was not tried
@@ -92,12 +102,16 @@ struct SceneUpdate {
   int dropped_clusters = 0;
   std::string segmentation_note;
   std::vector<CandidateOutcome> candidates;
+  // Instances marked gone on this frame, and gone ones forgotten (forget_gone_after): their ids.
+  std::vector<int> gone, forgotten;
   double segmentation_ms = 0, total_ms = 0;
 };
 
 // The scene layer (doc/method.md section 13): every frame's candidates are found, each is
 // associated with a known instance or identified against the library, and each instance's own
-// estimator fuses its view. Instances out of view keep their beliefs.
+// estimator fuses its view. Instances out of view keep their beliefs; one whose place the camera
+// sees free is marked gone after absent_views such frames, and a new object of its model is
+// taken for it moved (InstancePresence, "Change").
 class SceneEstimator {
  public:
   // Throws vdc::Error for invalid parameters (its own, the segmentation's, an instance's) and
@@ -125,8 +139,12 @@ class SceneEstimator {
   const ObjectInstance* instance(int id) const;
   // Whether the views support the instance's model well enough to report it: its identity
   // probability is at least min_probability (below, it is kept until it recovers or is dropped).
-  bool confirmed(const ObjectInstance& instance) const {
+  bool identified(const ObjectInstance& instance) const {
     return instance.identity_probability >= parameters_.identification.min_probability;
+  }
+  // Whether its pose is reported: identified and present (a gone one is not where it was).
+  bool confirmed(const ObjectInstance& instance) const {
+    return identified(instance) && instance.presence.state == InstanceState::kPresent;
   }
   const ModelLibrary& library() const { return library_; }
   // Forgets every instance (and every unknown object).
@@ -176,14 +194,19 @@ class SceneEstimator {
                              const SceneDepth& scene, const Eigen::Isometry3d& world_from_camera,
                              std::optional<double> time, int* identifications, SceneUpdate* result);
   // remember_unknown: an unknown outcome is remembered (unknowns_) for its centroid.
-  void identify(const FrameCandidate& candidate, const SceneDepth& scene,
-                const Eigen::Isometry3d& world_from_camera, std::optional<double> time,
-                CandidateOutcome* outcome, bool remember_unknown = true);
+  // Returns the index of the candidate's instance (a new one, or a known one that moved), or -1.
+  int identify(const FrameCandidate& candidate, const SceneDepth& scene,
+               const Eigen::Isometry3d& world_from_camera, std::optional<double> time,
+               CandidateOutcome* outcome, bool remember_unknown = true);
+  // The instance a candidate identified as `model` is (its index): a known one of the model that
+  // is out of place (InstancePresence::movedInstance: it moved here), else a new one.
+  int instanceFor(int model, CandidateOutcome* outcome);
 
   ModelLibrary library_;
   SceneEstimatorParameters parameters_;
   std::vector<std::unique_ptr<InstanceExplanation>> explanations_;  // per library model
   std::unique_ptr<ShapeAlternative> shapes_;
+  std::unique_ptr<InstancePresence> presence_;
   std::vector<ObjectInstance> instances_;
   UnknownObjects unknowns_;
   std::vector<int> instances_named_;  // per model: instances named so far

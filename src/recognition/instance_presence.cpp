@@ -1,0 +1,213 @@
+#include "view_direction_classification/recognition/instance_presence.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <utility>
+
+#include "view_direction_classification/common/error.h"
+#include "view_direction_classification/common/quaternion.h"
+#include "view_direction_classification/recognition/scene_estimator.h"
+
+namespace vdc {
+namespace {
+
+// [m] The model's samples are thinned to refinement's spacing: a few hundred camera-facing
+// samples per object are plenty to tell a surface from free space, and the check runs for every
+// instance out of place on every segmented frame.
+constexpr double kSampleSpacing = 0.004;
+// A frame is evidence only when the depth judged (seen or free) at least this fraction of the
+// camera-facing samples: a place mostly hidden or mostly outside the image tells nothing, and a
+// few rays past an occluder's edge must not decide.
+constexpr double kMinJudgedFraction = 0.5;
+// Of the judged samples, this fraction free makes the frame one of absence. Not all of a removed
+// object's samples come out free: near its foot the table lies within the tolerance of where the
+// surface should be (about the lowest centimetre of a mug seen from 40 degrees up). And an object
+// moved 5 cm sideways still covers part of its old rays at nearly the old depth.
+constexpr double kMinFreeFraction = 0.6;
+// Samples nearer the camera than this [m] have no usable ray (DepthRenderer's near plane).
+constexpr float kMinDepth = 0.01f;
+
+// The nearest depth seen on each ray (within ray_radius / z of it) in one ray-indexed cloud, or
+// infinity where it has no point there.
+void nearestDepths(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& points,
+                   const std::shared_ptr<const NearestPoints>& rays_index,
+                   const std::vector<Eigen::Vector3f>& samples,
+                   const std::vector<Eigen::Vector3f>& rays, double ray_radius, float nearest_z,
+                   std::vector<float>* depths) {
+  if (!points || !rays_index || samples.empty()) return;
+  std::vector<int> index;
+  std::vector<float> squared;
+  rays_index->search(rays, &index, &squared, ray_radius / nearest_z);
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    const float radius = static_cast<float>(ray_radius) / samples[i].z();
+    if (index[i] < 0 || squared[i] > radius * radius) continue;
+    (*depths)[i] = std::min((*depths)[i], (*points)[index[i]].z);
+  }
+}
+
+Eigen::Isometry3d believedPose(const OrientationEstimator& estimator,
+                               const Eigen::Vector3d& position) {
+  Eigen::Isometry3d world_from_object = Eigen::Isometry3d::Identity();
+  world_from_object.linear() = quaternionToRotationMatrix(estimator.mapOrientation());
+  world_from_object.translation() = position;
+  return world_from_object;
+}
+
+PresenceEvidence evidenceOf(const PresenceCheck& check) {
+  const int judged = check.seen + check.free;
+  if (check.predicted == 0 || judged < kMinJudgedFraction * check.predicted) {
+    return PresenceEvidence::kNone;
+  }
+  return check.free >= kMinFreeFraction * judged ? PresenceEvidence::kAbsent
+                                                 : PresenceEvidence::kSeen;
+}
+
+}  // namespace
+
+InstancePresence::InstancePresence(const ModelLibrary& library,
+                                   const VerificationParameters& verification, int absent_views,
+                                   double forget_gone_after)
+    : verification_(verification),
+      absent_views_(absent_views),
+      forget_gone_after_(forget_gone_after) {
+  checkVerificationParameters(verification_);
+  if (absent_views_ < 1) {
+    throw Error("instance presence: absent_views must be >= 1, got " +
+                std::to_string(absent_views_));
+  }
+  for (const LibraryModel& model : library.models()) {
+    const ModelBundle& bundle = *model.bundle;
+    surfaces_.push_back(std::make_unique<const ModelSurface>(
+        bundle.surface_points, bundle.surface_normals, bundle.bounds,
+        bundle.parameters.surface_spacing, kSampleSpacing));
+  }
+}
+
+InstancePresence::~InstancePresence() = default;
+
+double InstancePresence::freeSpaceTolerance(double z) const {
+  // The same tolerance as verification's free space: a sample this far in front of the
+  // observed surface is one the camera saw through.
+  return std::max(verification_.free_space_tolerance,
+                  verification_.free_space_sigmas * verification_.depth_noise_at_1m * z * z);
+}
+
+PresenceCheck InstancePresence::check(int model, const Eigen::Isometry3d& world_from_object,
+                                      const SceneDepth& scene,
+                                      const Eigen::Isometry3d& world_from_camera) const {
+  PresenceCheck result;
+  const ModelSurface& surface = *surfaces_.at(static_cast<std::size_t>(model));
+  const Eigen::Isometry3f camera_from_object =
+      (world_from_camera.inverse() * world_from_object).cast<float>();
+  std::vector<Eigen::Vector3f> samples, rays;
+  float nearest_z = std::numeric_limits<float>::infinity();
+  for (const auto& sample : surface.cloud()->points) {
+    const Eigen::Vector3f m = camera_from_object * sample.getVector3fMap();
+    if (!(m.z() > kMinDepth)) continue;
+    const Eigen::Vector3f n = camera_from_object.linear() * sample.getNormalVector3fMap();
+    if (-n.dot(m) / m.norm() < verification_.min_facing_cosine) continue;
+    samples.push_back(m);
+    rays.emplace_back(m.x() / m.z(), m.y() / m.z(), 0.0f);
+    nearest_z = std::min(nearest_z, m.z());
+  }
+  result.predicted = static_cast<int>(samples.size());
+  // The frame's scene is ray-indexed once for all its verifiers; a caller's may not be.
+  const bool indexed =
+      (!scene.occluders || scene.occluder_rays) && (!scene.supports || scene.support_rays);
+  const SceneDepth depth = indexed ? scene : indexRays(scene);
+  // The ray radius of verification's predicted half: the samples' neighbourhood.
+  const double ray_radius = std::max(0.004, 2.0 * surface.spacing());
+  std::vector<float> observed(samples.size(), std::numeric_limits<float>::infinity());
+  // What the camera saw on a ray is the nearest of the two: an object or the table.
+  nearestDepths(depth.occluders, depth.occluder_rays, samples, rays, ray_radius, nearest_z,
+                &observed);
+  nearestDepths(depth.supports, depth.support_rays, samples, rays, ray_radius, nearest_z,
+                &observed);
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    if (!std::isfinite(observed[i])) continue;
+    const double tolerance = freeSpaceTolerance(observed[i]);
+    if (observed[i] < samples[i].z() - tolerance) {
+      ++result.hidden;
+    } else if (observed[i] > samples[i].z() + tolerance) {
+      ++result.free;
+    } else {
+      ++result.seen;
+    }
+  }
+  result.evidence = evidenceOf(result);
+  return result;
+}
+
+void InstancePresence::record(const PresenceCheck& check, std::optional<double> time,
+                              Presence* presence) const {
+  presence->last_check = check;
+  if (check.evidence == PresenceEvidence::kSeen) presence->absent_frames = 0;
+  if (check.evidence != PresenceEvidence::kAbsent) return;
+  ++presence->absent_frames;
+  if (presence->absent_frames >= absent_views_) {
+    presence->state = InstanceState::kGone;
+    presence->gone_since = time;
+  }
+}
+
+std::vector<int> InstancePresence::observe(std::vector<ObjectInstance>& instances,
+                                           const std::vector<int>& associated,
+                                           const SceneDepth& scene,
+                                           const Eigen::Isometry3d& world_from_camera,
+                                           std::optional<double> time) const {
+  std::vector<int> marked_gone;
+  for (ObjectInstance& instance : instances) {
+    Presence& presence = instance.presence;
+    if (std::find(associated.begin(), associated.end(), instance.id) != associated.end()) {
+      presence = Presence{};  // seen: present, whatever the frames before said
+      continue;
+    }
+    // A gone instance stays gone until a candidate is associated with it or it is found moved.
+    if (presence.state == InstanceState::kGone) continue;
+    const auto position = instance.estimator->positionEstimate();
+    if (!position) continue;
+    record(check(instance.model, believedPose(*instance.estimator, *position), scene,
+                 world_from_camera),
+           time, &presence);
+    if (presence.state == InstanceState::kGone) marked_gone.push_back(instance.id);
+  }
+  return marked_gone;
+}
+
+int InstancePresence::movedInstance(const std::vector<ObjectInstance>& instances, int model,
+                                    const Eigen::Vector3d& centroid_world) const {
+  int nearest = -1;
+  double nearest_distance = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < instances.size(); ++i) {
+    const ObjectInstance& instance = instances[i];
+    const bool out_of_place =
+        instance.presence.state == InstanceState::kGone || instance.presence.absent_frames > 0;
+    if (instance.model != model || !out_of_place) continue;
+    const double distance = (instance.centroid_world - centroid_world).norm();
+    if (distance < nearest_distance) {
+      nearest = static_cast<int>(i);
+      nearest_distance = distance;
+    }
+  }
+  return nearest;
+}
+
+std::vector<int> InstancePresence::forgetGone(std::vector<ObjectInstance>& instances,
+                                              std::optional<double> time) const {
+  std::vector<int> forgotten;
+  if (forget_gone_after_ <= 0.0 || !time) return forgotten;
+  const auto expired = [&](const ObjectInstance& instance) {
+    const Presence& presence = instance.presence;
+    return presence.state == InstanceState::kGone && presence.gone_since &&
+           *time - *presence.gone_since > forget_gone_after_;
+  };
+  for (const ObjectInstance& instance : instances) {
+    if (expired(instance)) forgotten.push_back(instance.id);
+  }
+  instances.erase(std::remove_if(instances.begin(), instances.end(), expired), instances.end());
+  return forgotten;
+}
+
+}  // namespace vdc
