@@ -204,10 +204,14 @@ void OrientationEstimator::setParameters(EstimatorParameters parameters) {
 
 ViewUpdate OrientationEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
                                         const Eigen::Isometry3d& world_from_camera,
-                                        std::optional<double> time,
-                                        const SceneDepth& verification_scene, BeliefSearch search) {
+                                        std::optional<double> time, const ViewContext& context) {
   if (!world_from_camera.matrix().allFinite()) {
     throw Error("the camera pose given to the orientation estimator is not finite");
+  }
+  if (context.features && parameters_.segmentation.mode != SegmentationMode::kNone) {
+    throw Error(
+        "an orientation estimator was given the cloud's features, which it takes only "
+        "with segmentation none (the cloud is the object)");
   }
   // An earlier view's search left pending belongs in the belief before this view.
   if (pending_search_) completeSearch(ViewUpdate{});
@@ -231,11 +235,11 @@ ViewUpdate OrientationEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cl
   const Eigen::Isometry3d camera_from_world = world_from_camera.inverse();
   SegmentationParameters segmentation = parameters_.segmentation;
   segmentation.roi_centre = camera_from_world * segmentation.roi_centre;
-  SegmentationContext context;
-  if (segmentation.mode == SegmentationMode::kTabletop) context.extent = extent_;
+  SegmentationContext expected;
+  if (segmentation.mode == SegmentationMode::kTabletop) expected.extent = extent_;
   if (track_ && !search_whole_view)
-    context.expected_centroid = camera_from_world * track_->centroid;
-  const ObjectSegment object = segmentObject(cloud, segmentation, context);
+    expected.expected_centroid = camera_from_world * track_->centroid;
+  const ObjectSegment object = segmentObject(cloud, segmentation, expected);
   const Clock::time_point segmented = Clock::now();
   result.timing.segmentation = millisecondsBetween(selection_done, segmented);
   result.object_points = static_cast<int>(object.points.size());
@@ -264,8 +268,11 @@ ViewUpdate OrientationEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cl
   track_->centroid = result.observed_centroid_world;
   if (object.table) track_->table = planeInWorld(*object.table, world_from_camera);
 
-  const FeatureSet features = computeFeatures(
-      object.points, featureParametersOf(model_->parameters), Eigen::Vector3f::Zero());
+  const FeatureSet computed =
+      context.features ? FeatureSet{}
+                       : computeFeatures(object.points, featureParametersOf(model_->parameters),
+                                         Eigen::Vector3f::Zero());
+  const FeatureSet& features = context.features ? *context.features : computed;
   const Clock::time_point described = Clock::now();
   result.timing.features = millisecondsBetween(segmented, described);
   result.features = static_cast<int>(features.size());
@@ -310,9 +317,10 @@ ViewUpdate OrientationEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cl
   result.timing.fusion = millisecondsBetween(measured, fused);
   if (refiner_) {
     refineAfterFusion(object.points,
-                      verification_scene.empty() ? verificationScene(cloud, object, segmentation)
-                                                 : verification_scene,
-                      world_from_camera, measurement, line_of_sight, search, &result);
+                      context.verification_scene.empty()
+                          ? verificationScene(cloud, object, segmentation)
+                          : context.verification_scene,
+                      world_from_camera, measurement, line_of_sight, context.search, &result);
   }
   const Clock::time_point refined = Clock::now();
   result.timing.refinement = millisecondsBetween(fused, refined);

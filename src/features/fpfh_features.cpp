@@ -214,6 +214,12 @@ bool weightedHistogram(const std::vector<Spfh>& spfh, const pcl::Indices& indice
 
 }  // namespace
 
+bool operator==(const FeatureParameters& a, const FeatureParameters& b) {
+  return a.keypoint_voxel == b.keypoint_voxel && a.normal_radius == b.normal_radius &&
+         a.fpfh_radius == b.fpfh_radius && a.support_voxel == b.support_voxel &&
+         a.min_neighbours == b.min_neighbours;
+}
+
 FeatureSet computeFeatures(const Cloud& cloud, const FeatureParameters& parameters,
                            const Eigen::Vector3f& viewpoint, int threads) {
   const int workers = threads > 0 ? threads : hardwareThreads();

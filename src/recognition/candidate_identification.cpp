@@ -2,8 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <utility>
+#include <vector>
 
 #include "view_direction_classification/common/error.h"
+#include "view_direction_classification/features/fpfh_features.h"
+#include "view_direction_classification/training/model_training.h"
 
 namespace vdc {
 
@@ -61,6 +66,44 @@ double identityEvidence(std::optional<double> identity_score,
   return std::clamp(evidence, -parameters.max_view_evidence, parameters.max_view_evidence);
 }
 
+namespace {
+
+// The fitting models a candidate may be (allowed: per library model; empty: any).
+std::vector<int> allowedFitting(const ModelLibrary& library, const Eigen::Vector3d& candidate_sides,
+                                double extent_tolerance, const std::vector<bool>& allowed) {
+  std::vector<int> fitting = library.fitting(candidate_sides, extent_tolerance);
+  if (allowed.empty()) return fitting;
+  fitting.erase(std::remove_if(fitting.begin(), fitting.end(),
+                               [&](int m) {
+                                 const auto k = static_cast<std::size_t>(m);
+                                 return k >= allowed.size() || !allowed[k];
+                               }),
+                fitting.end());
+  return fitting;
+}
+
+// A candidate's features, computed once per feature setting among the models it is tried
+// against (models trained with the defaults share them).
+class SharedFeatures {
+ public:
+  explicit SharedFeatures(const pcl::PointCloud<pcl::PointXYZ>& points) : points_(points) {}
+  std::shared_ptr<const FeatureSet> of(const FeatureParameters& parameters) {
+    for (const auto& [settings, features] : computed_) {
+      if (settings == parameters) return features;
+    }
+    computed_.emplace_back(parameters, std::make_shared<const FeatureSet>(computeFeatures(
+                                           points_, parameters, Eigen::Vector3f::Zero())));
+    return computed_.back().second;
+  }
+  int passes() const { return static_cast<int>(computed_.size()); }
+
+ private:
+  const pcl::PointCloud<pcl::PointXYZ>& points_;
+  std::vector<std::pair<FeatureParameters, std::shared_ptr<const FeatureSet>>> computed_;
+};
+
+}  // namespace
+
 Identification identifyCandidate(
     const ModelLibrary& library, const EstimatorParameters& instance_parameters,
     const pcl::PointCloud<pcl::PointXYZ>& points, const Eigen::Vector3d& candidate_sides,
@@ -74,23 +117,20 @@ Identification identifyCandidate(
   result.scores.assign(library.size(), std::nullopt);
   std::vector<std::unique_ptr<OrientationEstimator>> estimators(library.size());
   std::vector<ViewUpdate> updates(library.size());
-  std::vector<int> fitting = library.fitting(candidate_sides, parameters.extent_tolerance);
-  if (!allowed.empty()) {
-    fitting.erase(std::remove_if(fitting.begin(), fitting.end(),
-                                 [&](int m) {
-                                   const auto k = static_cast<std::size_t>(m);
-                                   return k >= allowed.size() || !allowed[k];
-                                 }),
-                  fitting.end());
-  }
+  const std::vector<int> fitting =
+      allowedFitting(library, candidate_sides, parameters.extent_tolerance, allowed);
   // Every fitting model first refines its own belief; the searches beyond the beliefs (the
   // larger part of a model's cost) run only when no model explained the candidate at once.
+  SharedFeatures features(points);
   for (int m : fitting) {
+    const ModelBundle& bundle = *library.models()[m].bundle;
     estimators[m] =
         std::make_unique<OrientationEstimator>(library.models()[m].bundle, instance_parameters);
-    updates[m] =
-        estimators[m]->update(points, world_from_camera, time, scene, BeliefSearch::kDeferred);
+    updates[m] = estimators[m]->update(
+        points, world_from_camera, time,
+        {scene, BeliefSearch::kDeferred, features.of(featureParametersOf(bundle.parameters))});
   }
+  result.feature_passes = features.passes();
   const bool explained_at_once = std::any_of(fitting.begin(), fitting.end(), [&](int m) {
     return !updates[m].search_pending && updates[m].verified_score &&
            *updates[m].verified_score >= instance_parameters.belief_check.search_below_score;

@@ -312,7 +312,8 @@ void SceneEstimator::updateAssignedInstances(std::vector<FrameCandidate>& candid
       if (first < 0) first = static_cast<int>(c), up = candidates[c].up;
     }
     if (first < 0) continue;
-    const ViewUpdate update = instance.estimator->update(points, world_from_camera, time, scene);
+    const ViewUpdate update = instance.estimator->update(points, world_from_camera, time,
+                                                         {scene, BeliefSearch::kWhenDue, nullptr});
     result->candidates[first].update = update;
     instance.centroid_world = result->candidates[first].centroid_world;
     instance.last_seen = time;

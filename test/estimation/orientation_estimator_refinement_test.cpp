@@ -189,7 +189,7 @@ TEST_F(EstimatorRefinementTest, ADeferredSearchCompletedRebuildsTheBeliefAsOneAt
   ASSERT_TRUE(searched.searched);
 
   const ViewUpdate pending =
-      deferred.update(second, second_pose, std::nullopt, {}, BeliefSearch::kDeferred);
+      deferred.update(second, second_pose, std::nullopt, {{}, BeliefSearch::kDeferred, nullptr});
   ASSERT_TRUE(pending.updated) << pending.skip_reason;
   EXPECT_TRUE(pending.search_pending);
   EXPECT_FALSE(pending.searched);

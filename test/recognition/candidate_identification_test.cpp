@@ -114,6 +114,26 @@ TEST(IdentifyCandidate, AModelThatExplainsTheCandidateAtOnceSparesTheOthersTheir
   EXPECT_FALSE(mug.update.search_pending);
 }
 
+TEST(IdentifyCandidate, ACandidateIsDescribedOnceForTheModelsThatShareFeatureSettings) {
+  // The mug and the flipped mug share the quick model's feature settings.
+  EXPECT_EQ(identifyAlone(makeMug()).feature_passes, 1);
+  // A model with a wider FPFH support needs its own pass.
+  ModelBundle wider = *test::quickMugModel();
+  wider.parameters.fpfh_radius *= 1.5;
+  const ModelLibrary library({{"mug", test::quickMugModel()},
+                              {"flipped", upsideDownMug()},
+                              {"wider", std::make_shared<const ModelBundle>(std::move(wider))}});
+  EstimatorParameters instance;
+  instance.segmentation.mode = SegmentationMode::kNone;
+  const auto [points, world_from_camera] = viewOf(makeMug());
+  const Identification mug =
+      identifyCandidate(library, instance, points, Eigen::Vector3d(0.11, 0.09, 0.08), {},
+                        world_from_camera, 0.0, IdentificationParameters());
+  EXPECT_EQ(mug.feature_passes, 2);
+  // The wider-support model, the same mug otherwise, explains it too.
+  EXPECT_TRUE(mug.scores[0] && mug.scores[2]);
+}
+
 TEST(IdentifyCandidate, WhenNoModelExplainsTheCandidateAtOnceEveryModelSearches) {
   // A box of the mug's size: neither model's belief explains it.
   const Identification box = identifyAlone(makeBoxMesh(Eigen::Vector3d(0.09, 0.08, 0.10)));

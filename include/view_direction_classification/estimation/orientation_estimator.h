@@ -20,6 +20,7 @@
 #include "view_direction_classification/estimation/orientation_filter.h"
 #include "view_direction_classification/estimation/refined_measurement.h"
 #include "view_direction_classification/estimation/refinement_mode.h"
+#include "view_direction_classification/features/fpfh_features.h"
 #include "view_direction_classification/planning/view_utility_scorer.h"
 #include "view_direction_classification/refinement/pose_refiner.h"
 #include "view_direction_classification/training/model_bundle.h"
@@ -170,6 +171,21 @@ enum class BeliefSearch {
   kDeferred,
 };
 
+// What a caller that segmented the scene itself may give an update besides the cloud (the scene
+// layer, whose candidates are the objects: segmentation `none`).
+struct ViewContext {
+  // What else the camera saw (camera frame): refinement verifies against it
+  // (RefinementView::scene). Empty: the scene segmentation leaves (verificationScene).
+  SceneDepth verification_scene;
+  BeliefSearch search = BeliefSearch::kWhenDue;
+  // The cloud's features, computed by the caller with the model's feature settings
+  // (computeFeatures(cloud, featureParametersOf(model.parameters), origin)): a candidate tried
+  // against several models with the same settings is described once. Only with segmentation
+  // `none` (update() throws vdc::Error otherwise: the object's points would differ). Null: the
+  // update computes them.
+  std::shared_ptr<const FeatureSet> features;
+};
+
 // The paper's online estimator without ROS (doc/method.md sections 5, 8-10): one depth cloud of the
 // object and the camera pose in the fixed frame in, the fused Bingham mixture over q_WO out.
 class OrientationEstimator {
@@ -188,16 +204,13 @@ class OrientationEstimator {
   // line of sight to the object, tempered by its separation from the fused views, moved into the
   // fixed frame and fused. Never throws for cloud content: empty, NaN or too small clouds are
   // skipped with a reason. Throws vdc::Error for a non-finite pose.
-  // verification_scene: what else the camera saw (camera frame), when `cloud` is already the
-  // object (segmentation `none`, e.g. one candidate of a scene): refinement verifies against it
-  // (RefinementView::scene). Empty: the scene segmentation leaves (verificationScene).
-  // search: kDeferred leaves a due search pending (ViewUpdate::search_pending) for
-  // completeSearch(); the next update() or reset() completes or drops it first.
+  // context (ViewContext): when `cloud` is already the object (segmentation `none`, one
+  // candidate of a scene), the scene it verifies against and its features; and whether a due
+  // search runs at once. BeliefSearch::kDeferred leaves it pending (ViewUpdate::search_pending)
+  // for completeSearch(); the next update() completes it first, reset() drops it.
   ViewUpdate update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
                     const Eigen::Isometry3d& world_from_camera,
-                    std::optional<double> time = std::nullopt,
-                    const SceneDepth& verification_scene = {},
-                    BeliefSearch search = BeliefSearch::kWhenDue);
+                    std::optional<double> time = std::nullopt, const ViewContext& context = {});
   // Runs the search an update() with BeliefSearch::kDeferred left pending and then fuses what
   // refinement kept, as update() would have: `update` (that update's result) comes back
   // completed (searched, rebuild_reason, refined_poses, the scores and the refinement time).

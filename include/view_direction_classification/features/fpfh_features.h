@@ -27,6 +27,10 @@ struct FeatureParameters {
   int min_neighbours = 10;  // keypoints with fewer cloud points within fpfh_radius drop
 };
 
+// Whether two settings describe a cloud alike (every field equal).
+bool operator==(const FeatureParameters& a, const FeatureParameters& b);
+inline bool operator!=(const FeatureParameters& a, const FeatureParameters& b) { return !(a == b); }
+
 // Local features of one cloud: keypoint i (in the cloud's frame) has descriptor row i.
 struct FeatureSet {
   std::vector<Eigen::Vector3f> keypoints;

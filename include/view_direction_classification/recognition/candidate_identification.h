@@ -63,6 +63,9 @@ struct Identification {
   std::string reason;  // why the candidate is unknown (empty when identified)
   // Per library model: whether its search beyond the belief ran (belief_check.h).
   std::vector<bool> searched;
+  // How often the candidate's features were computed: once per distinct feature setting among
+  // the models tried.
+  int feature_passes = 0;
 };
 
 // Identifies one candidate: a fresh estimator of each model whose size fits (instance settings,
