@@ -440,6 +440,11 @@ void SceneEstimatorRos::loadMemory() {
   }
   ROS_INFO("%s: %zu instances from the object memory %s", name.c_str(),
            estimator_->instances().size(), path.c_str());
+  // Published once now, so the remembered instances' tf frames are re-sent at tf_rate before
+  // the first cloud arrives (a planner may ask for one before the camera moves).
+  std_msgs::Header now;
+  now.stamp = ros::Time::now();
+  publishInstances(now);
 }
 
 std::string SceneEstimatorRos::saveMemory() {

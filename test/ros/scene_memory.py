@@ -4,6 +4,7 @@ the next start; ~save_memory says why when the file cannot be written; a file th
 loaded is one ERROR line naming it, the node keeps running, and the file is never saved over."""
 
 import os
+import shutil
 import signal
 import subprocess
 import tempfile
@@ -12,11 +13,16 @@ import unittest
 
 import rospy
 import rostest
+import tf2_ros
 from std_srvs.srv import Trigger
 
 from node_startup import PACKAGE, _binary, error_lines, fresh_name, load_config
 
 NODE = "orientation_estimator"
+# The scene_memory fuzz target's seed: one remembered mug, mug_1 (id 1, identity 0.9), its
+# refined position (0.41, -0.1, 0.7) in the fixed frame `world`.
+ONE_MUG = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "fuzz", "corpus",
+                       "scene_memory", "one_mug.h5")
 
 
 class RunningNode:
@@ -55,6 +61,25 @@ class SceneMemory(unittest.TestCase):
             self.assertTrue(response.success, response.message)
             self.assertIn("0 instances from the object memory", output)
             self.assertEqual(error_lines(output), [], output)
+
+    def test_a_remembered_instance_has_its_tf_frame_before_any_cloud(self):
+        with tempfile.TemporaryDirectory() as directory:
+            memory = os.path.join(directory, "objects.h5")
+            shutil.copy(ONE_MUG, memory)
+            buffer = tf2_ros.Buffer()
+            listener = tf2_ros.TransformListener(buffer)  # noqa: F841 (fills the buffer)
+            node = RunningNode(memory)
+            try:
+                transform = buffer.lookup_transform("world", "mug_1", rospy.Time(0),
+                                                    rospy.Duration(20.0))
+            finally:
+                code, output = node.stop()
+            self.assertEqual(code, 0, output)
+            self.assertIn("1 instances from the object memory", output)
+            translation = transform.transform.translation
+            self.assertAlmostEqual(translation.x, 0.41, places=6)
+            self.assertAlmostEqual(translation.y, -0.1, places=6)
+            self.assertAlmostEqual(translation.z, 0.7, places=6)
 
     def test_saving_into_a_missing_directory_fails_with_the_reason(self):
         with tempfile.TemporaryDirectory() as directory:
