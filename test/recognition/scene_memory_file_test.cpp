@@ -215,6 +215,17 @@ TEST_F(SceneMemoryFile, AnInstanceKeepsItsNameAndTheNextOneCountsOnFromIt) {
   EXPECT_EQ(memory.instances_named.at("mug"), 2);
 }
 
+TEST_F(SceneMemoryFile, NamesOfRememberedInstancesAreNotReusedWhateverTheCountersSay) {
+  // A memory whose name counters were lost (written by hand, or by a library without the model):
+  // the next mug must still not be named like a remembered one.
+  SceneMemory memory = observedScene().memory();
+  memory.instances_named.clear();
+  writeSceneMemoryFile(memory, path("no_counters.h5"));
+  SceneEstimator restarted = makeEstimator();
+  loadSceneMemory(path("no_counters.h5"), &restarted);
+  EXPECT_EQ(restarted.memory().instances_named.at("mug"), 2);
+}
+
 TEST_F(SceneMemoryFile, ATruncatedFileIsRefused) {
   const std::string truncated = path("truncated.h5");
   std::filesystem::copy_file(saved_, truncated);
