@@ -6,7 +6,8 @@
 # $SANITIZE_BUILD_DIR/corpus/<name>/ and a crash's input to $SANITIZE_BUILD_DIR/artifacts/<name>/.
 # Only the fuzz targets and the libraries they link are built.
 #   scripts/fuzz.sh [name...]   (names: mesh model_bundle cloud_conversion bingham_conversion
-#                                label_image_conversion server_requests scene_segmentation;
+#                                label_image_conversion server_requests scene_segmentation
+#                                scene_memory;
 #                                default all)
 # FUZZ_JOBS (default 2) lanes of targets run at once (below).
 # Exit 1 if any target crashed, leaked, ran out of memory or timed out on an input. The closing
@@ -17,7 +18,7 @@ build_dir=${SANITIZE_BUILD_DIR:-build-asan}
 seconds=${FUZZ_SECONDS:-60}
 export PATH=/usr/bin:/bin:$PATH
 all_targets=(mesh model_bundle cloud_conversion bingham_conversion label_image_conversion
-  server_requests scene_segmentation)
+  server_requests scene_segmentation scene_memory)
 targets=("${@:-${all_targets[@]}}")
 
 build_targets=()

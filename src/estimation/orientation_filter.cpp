@@ -1,5 +1,8 @@
 #include "view_direction_classification/estimation/orientation_filter.h"
 
+#include <string>
+#include <utility>
+
 #include "view_direction_classification/common/error.h"
 
 namespace vdc {
@@ -25,6 +28,15 @@ void OrientationFilter::update(const BinghamMixture& measurement) {
                             options_.sharpness_ratio),
                    options_.reduction);
   ++update_count_;
+}
+
+void OrientationFilter::restore(BinghamMixture belief, int update_count) {
+  if (update_count < 0) {
+    throw Error("The orientation filter's update count must be >= 0, got " +
+                std::to_string(update_count) + ".");
+  }
+  belief_ = std::move(belief);
+  update_count_ = update_count;
 }
 
 void OrientationFilter::reset() {

@@ -10,10 +10,12 @@
 
 #include <chrono>
 #include <exception>
+#include <filesystem>
 #include <sstream>
 #include <utility>
 
 #include "view_direction_classification/common/error.h"
+#include "view_direction_classification/recognition/scene_memory_file.h"
 #include "view_direction_classification/ros/belief_markers.h"
 #include "view_direction_classification/ros/bingham_conversions.h"
 #include "view_direction_classification/ros/cloud_conversions.h"
@@ -97,6 +99,9 @@ SceneEstimatorRos::SceneEstimatorRos(ros::NodeHandle node, ros::NodeHandle priva
   reset_server_ = private_node_.advertiseService("reset", &SceneEstimatorRos::resetService, this);
   reset_instance_server_ = private_node_.advertiseService(
       "reset_instance", &SceneEstimatorRos::resetInstanceService, this);
+  loadMemory();
+  save_memory_server_ =
+      private_node_.advertiseService("save_memory", &SceneEstimatorRos::saveMemoryService, this);
   diagnostics_.setHardwareID("none");
   diagnostics_.add("scene estimate", this, &SceneEstimatorRos::diagnose);
   diagnostics_timer_ = private_node_.createTimer(
@@ -136,6 +141,15 @@ SceneEstimatorRos::~SceneEstimatorRos() {
   cloud_subscriber_.shutdown();
   labels_subscriber_.shutdown();
   worker_.reset();  // after the subscription: no cloud is offered to a stopped worker
+  if (scene_parameters_.memory_file.empty()) return;
+  std::lock_guard<std::mutex> lock(estimator_mutex_);
+  const std::string failure = saveMemory();
+  if (failure.empty()) {
+    ROS_INFO("%s: the object memory is saved to %s", private_node_.getNamespace().c_str(),
+             scene_parameters_.memory_file.c_str());
+  } else {
+    ROS_ERROR("%s: %s", private_node_.getNamespace().c_str(), failure.c_str());
+  }
 }
 
 void SceneEstimatorRos::cloudCallback(const sensor_msgs::PointCloud2ConstPtr& cloud) {
@@ -418,6 +432,62 @@ bool SceneEstimatorRos::resetService(std_srvs::Trigger::Request&,
   forgetTransforms();
   response.success = true;
   response.message = "Every instance is forgotten.";
+  return true;
+}
+
+void SceneEstimatorRos::loadMemory() {
+  const std::string& path = scene_parameters_.memory_file;
+  const std::string name = private_node_.getNamespace();
+  std::error_code error;
+  if (path.empty() || !std::filesystem::exists(path, error)) {
+    if (!path.empty()) {
+      ROS_INFO("%s: no object memory %s yet: starting empty", name.c_str(), path.c_str());
+    }
+    return;
+  }
+  std::lock_guard<std::mutex> lock(estimator_mutex_);
+  try {
+    loadSceneMemory(path, estimator_.get());
+  } catch (const std::exception& e) {
+    // Kept for the user to inspect: saving over it at shutdown would lose what it still holds.
+    memory_refused_ = e.what();
+    ROS_ERROR(
+        "%s: the object memory could not be loaded, starting empty; it will not be saved "
+        "over: %s",
+        name.c_str(), e.what());
+    return;
+  }
+  ROS_INFO("%s: %zu instances from the object memory %s", name.c_str(),
+           estimator_->instances().size(), path.c_str());
+  // Published once now, so the remembered instances' tf frames are re-sent at tf_rate before
+  // the first cloud arrives (a planner may ask for one before the camera moves).
+  std_msgs::Header now;
+  now.stamp = ros::Time::now();
+  publishInstances(now);
+}
+
+std::string SceneEstimatorRos::saveMemory() {
+  const std::string& path = scene_parameters_.memory_file;
+  if (path.empty()) return "no ~memory_file is set";
+  if (!memory_refused_.empty()) {
+    return "not saved over " + path + ", which could not be loaded at start-up: " + memory_refused_;
+  }
+  try {
+    saveSceneMemory(*estimator_, path);
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "";
+}
+
+bool SceneEstimatorRos::saveMemoryService(std_srvs::Trigger::Request&,
+                                          std_srvs::Trigger::Response& response) {
+  std::lock_guard<std::mutex> lock(estimator_mutex_);
+  const std::string failure = saveMemory();
+  response.success = failure.empty();
+  response.message = failure.empty() ? std::to_string(estimator_->instances().size()) +
+                                           " instances saved to " + scene_parameters_.memory_file
+                                     : failure;
   return true;
 }
 

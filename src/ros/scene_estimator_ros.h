@@ -66,6 +66,13 @@ class SceneEstimatorRos {
   bool resetInstanceService(view_direction_classification::ResetInstance::Request& request,
                             view_direction_classification::ResetInstance::Response& response);
   void forgetTransforms();
+  // ~memory_file: loaded at start-up (a file that cannot be loaded is reported and kept, and
+  // never saved over); saved at shutdown and on ~save_memory. saveMemory returns why it failed
+  // (empty: saved); call it with estimator_mutex_ held.
+  void loadMemory();
+  std::string saveMemory();
+  bool saveMemoryService(std_srvs::Trigger::Request& request,
+                         std_srvs::Trigger::Response& response);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
 
   ros::NodeHandle node_, private_node_;
@@ -90,7 +97,9 @@ class SceneEstimatorRos {
   std::vector<geometry_msgs::TransformStamped> transforms_;
   ros::Timer transforms_timer_;
   ros::Publisher instances_publisher_, markers_publisher_, estimate_publisher_, pose_publisher_;
-  ros::ServiceServer reset_server_, reset_instance_server_;
+  ros::ServiceServer reset_server_, reset_instance_server_, save_memory_server_;
+  // Why ~memory_file must not be saved over (it exists and could not be loaded); empty: it may.
+  std::string memory_refused_;
   ros::Subscriber cloud_subscriber_, labels_subscriber_;
   diagnostic_updater::Updater diagnostics_;
   ros::Timer diagnostics_timer_;

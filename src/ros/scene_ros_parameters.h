@@ -26,6 +26,9 @@ struct SceneRosParameters {
   // slower than the camera).
   double labels_stamp_tolerance = 0.0;
   double labels_timeout = 0.2;
+  // The object memory (recognition/scene_memory_file.h): loaded at start-up when it exists,
+  // saved at shutdown and on ~save_memory. Empty: nothing outlives the node.
+  std::string memory_file;
 };
 
 // The scene settings' names, fields and rules (scene_ros_parameters.cpp).

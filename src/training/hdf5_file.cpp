@@ -156,6 +156,15 @@ void Hdf5File::createGroup(const std::string& name) {
   if (!group.valid()) fail("cannot create group " + name);
 }
 
+bool Hdf5File::exists(const std::string& name) const {
+  for (std::size_t slash = name.find('/');; slash = name.find('/', slash + 1)) {
+    const std::string prefix = name.substr(0, slash);
+    if (H5Lexists(id_, prefix.c_str(), H5P_DEFAULT) <= 0) return false;
+    checkObjectHeader(prefix);
+    if (slash == std::string::npos) return true;
+  }
+}
+
 template <typename Scalar>
 void Hdf5File::write(const std::string& name, const Scalar* row_major, int rank,
                      const hsize_t* dims) {
@@ -286,6 +295,21 @@ void Hdf5File::writeAttribute(const std::string& object, const std::string& name
 bool Hdf5File::hasAttribute(const std::string& object, const std::string& name) const {
   checkObjectHeader(object);
   return H5Aexists_by_name(id_, object.c_str(), name.c_str(), H5P_DEFAULT) > 0;
+}
+
+std::vector<std::string> Hdf5File::attributeNames(const std::string& object) const {
+  checkObjectHeader(object);
+  std::vector<std::string> names;
+  H5A_operator2_t collect = [](hid_t, const char* name, const H5A_info_t*, void* data) -> herr_t {
+    static_cast<std::vector<std::string>*>(data)->push_back(name);
+    return 0;
+  };
+  hsize_t index = 0;
+  if (H5Aiterate_by_name(id_, object.c_str(), H5_INDEX_NAME, H5_ITER_INC, &index, collect, &names,
+                         H5P_DEFAULT) < 0) {
+    fail("cannot list the attributes of " + object);
+  }
+  return names;
 }
 
 hid_t Hdf5File::openAttribute(const std::string& object, const std::string& name) const {

@@ -1,6 +1,7 @@
 #pragma once
 
-// Private to the learning library: a thin RAII layer over the HDF5 C API for the model bundle.
+// Private to the core libraries: a thin RAII layer over the HDF5 C API for the model bundle (and
+// the recognition module's object memory file).
 // Matrices are stored as row-major 2-D datasets (h5py and h5dump show them as rows x columns,
 // like Eigen), vectors as 1-D datasets. Every failure throws vdc::Error prefixed with the file's
 // label, so the caller's message names the file.
@@ -11,6 +12,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace vdc {
 
@@ -38,6 +40,8 @@ class Hdf5File {
   void close();
 
   void createGroup(const std::string& name);
+  // Whether a group or dataset of that path exists (each level checked, headers verified).
+  bool exists(const std::string& name) const;
 
   // Scalar: float, double or int (stored as IEEE 32/64-bit or 32-bit little-endian integers).
   template <typename Scalar>
@@ -55,6 +59,8 @@ class Hdf5File {
   void writeAttribute(const std::string& object, const std::string& name, std::int64_t value);
   void writeAttribute(const std::string& object, const std::string& name, const std::string& value);
   bool hasAttribute(const std::string& object, const std::string& name) const;
+  // The names of the object's attributes (files that key values by name, e.g. per model).
+  std::vector<std::string> attributeNames(const std::string& object) const;
   // Throw if missing or of the other number class (integer vs floating point) or not a string.
   double readDoubleAttribute(const std::string& object, const std::string& name) const;
   std::int64_t readIntegerAttribute(const std::string& object, const std::string& name) const;

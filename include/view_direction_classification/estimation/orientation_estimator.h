@@ -14,6 +14,7 @@
 #include "view_direction_classification/bingham/bingham_mixture.h"
 #include "view_direction_classification/estimation/belief_check.h"
 #include "view_direction_classification/estimation/belief_spread.h"
+#include "view_direction_classification/estimation/estimator_snapshot.h"
 #include "view_direction_classification/estimation/frame_selection.h"
 #include "view_direction_classification/estimation/object_segmentation.h"
 #include "view_direction_classification/estimation/object_tracking.h"
@@ -224,6 +225,12 @@ class OrientationEstimator {
   // the new settings. Not thread-safe with update(): the caller serialises them (the ROS node
   // calls both under one mutex, so a change lands between two frames).
   void setParameters(EstimatorParameters parameters);
+  // The state a restart needs back (estimator_snapshot.h says what is left out), and the
+  // estimator set to one: restore() throws vdc::Error for a snapshot that is not finite, whose
+  // views or covariance are malformed or whose update_count is negative, and then changes
+  // nothing. The camera's last pose and the latest views' points are cleared.
+  EstimatorSnapshot snapshot() const;
+  void restore(const EstimatorSnapshot& snapshot);
 
   const BinghamMixture& belief() const { return filter_.belief(); }
   // Measurements fused since the last reset: each view's, and its verified poses' when

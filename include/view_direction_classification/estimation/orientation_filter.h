@@ -35,6 +35,9 @@ class OrientationFilter {
   // New options (throws vdc::Error for invalid ones, keeping the old): the belief is kept and
   // the next update() reduces with them.
   void setOptions(OrientationFilterOptions options);
+  // A belief saved earlier and its update count (a restart); throws vdc::Error for a negative
+  // count, keeping the old belief.
+  void restore(BinghamMixture belief, int update_count);
 
   const BinghamMixture& belief() const { return belief_; }
   int updateCount() const { return update_count_; }

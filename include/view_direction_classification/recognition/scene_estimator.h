@@ -17,6 +17,7 @@
 #include "view_direction_classification/recognition/instance_explanation.h"
 #include "view_direction_classification/recognition/instance_presence.h"
 #include "view_direction_classification/recognition/model_library.h"
+#include "view_direction_classification/recognition/scene_memory.h"
 #include "view_direction_classification/recognition/shape_alternative.h"
 #include "view_direction_classification/recognition/unknown_objects.h"
 #include "view_direction_classification/scene/scene_segmentation.h"
@@ -151,6 +152,13 @@ class SceneEstimator {
   void reset();
   // Forgets one instance; false if there is none with that id.
   bool resetInstance(int id);
+  // The instances and id counters a restart needs back (scene_memory_file.h saves them), and
+  // the estimator set to them: restoreMemory throws vdc::Error (changing nothing) for an
+  // instance whose model is not in the library, a repeated id or name, a next_id that would
+  // reuse one, or an estimator snapshot the instance's estimator refuses. Unknown objects and
+  // the last segmented camera pose are forgotten.
+  SceneMemory memory() const;
+  void restoreMemory(const SceneMemory& memory);
 
  private:
   // One candidate of the frame being processed.
