@@ -57,7 +57,8 @@ ParameterTable<SceneRosParameters> makeTable() {
            integerAtLeast(1, "1: the label value is the class"))
       .add("labels_stamp_tolerance", &P::labels_stamp_tolerance,
            numberAtLeast(0.0, "0: the cloud's stamp exactly"))
-      .add("labels_timeout", &P::labels_timeout, numberAtLeast(0.0));
+      .add("labels_timeout", &P::labels_timeout, numberAtLeast(0.0))
+      .add("memory_fade_age", &P::memory_fade_age, numberAbove(0.0));
   return table;
 }
 

@@ -26,6 +26,9 @@ struct SceneRosParameters {
   // slower than the camera).
   double labels_stamp_tolerance = 0.0;
   double labels_timeout = 0.2;
+  // ~memory_markers: a remembered instance's markers fade by half (above a floor) every this
+  // many seconds since it was last seen.
+  double memory_fade_age = 60.0;
 };
 
 // The scene settings' names, fields and rules (scene_ros_parameters.cpp).
