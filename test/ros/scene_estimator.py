@@ -146,7 +146,8 @@ class SceneEstimator(unittest.TestCase):
         for request in (QueryInstancesRequest(model="teapot"), QueryInstancesRequest(id=-1),
                         QueryInstancesRequest(id=9999)):
             answer = query(request)
-            rospy.loginfo("scene: query %r: %s", request, answer.message)
+            rospy.loginfo("scene: query model %r id %d: %s", request.model, request.id,
+                          answer.message)
             self.assertEqual(len(answer.instances), 0, answer.message)
             self.assertTrue(answer.message)
         self.assertIn("teapot", query(QueryInstancesRequest(model="teapot")).message)
