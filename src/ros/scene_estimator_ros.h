@@ -69,13 +69,15 @@ class SceneEstimatorRos {
   bool resetInstanceService(view_direction_classification::ResetInstance::Request& request,
                             view_direction_classification::ResetInstance::Response& response);
   void forgetTransforms();
-  // The object memory's question and its view (instance_query.h, memory_markers.h). Called with
-  // estimator_mutex_ held: the instances as ~instances lists them, stamped with the last cloud's.
+  // The object memory's question and its view (instance_query.h, memory_markers.h). These three
+  // are called with estimator_mutex_ held: the fixed frame and the last cloud's stamp, the
+  // instances as ~instances lists them, and ~memory_markers of them (while subscribed).
   std_msgs::Header memoryHeader() const;
   std::vector<view_direction_classification::ObjectInstance> memory() const;
+  void publishMemoryMarkers(const std::vector<view_direction_classification::ObjectInstance>& all);
+  // Takes estimator_mutex_: waits for a frame being processed.
   bool queryService(view_direction_classification::QueryInstances::Request& request,
                     view_direction_classification::QueryInstances::Response& response);
-  void publishMemoryMarkers(const std::vector<view_direction_classification::ObjectInstance>& all);
   // The timer's redraw, so ages advance while no frame is segmented; skipped while a frame is.
   void redrawMemory();
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
