@@ -12,6 +12,11 @@
 // (fuzz/corpus/model_bundle/cube_tiny.h5, a real model trained small so each input runs fast:
 // `vdc train --quick --views 4 --clouds-per-view 1 --clusters 1` on a 4 cm cube, 547 surface
 // points).
+//
+// Also the object memory's ~query_instances answers (instance_query.h, the orientation_estimator's;
+// pure message handling, so it shares this target): requests of any model name and id against the
+// last fuzzed ~instances, over the library names "cube" and "other". Every request must be answered
+// with a message, only instances that match it, in id order.
 
 #include <fuzzer/FuzzedDataProvider.h>
 #include <ros/time.h>
@@ -25,6 +30,7 @@
 #include <vector>
 
 #include "../src/ros/informativeness_server_requests.h"
+#include "../src/ros/instance_query.h"
 #include "fuzzed_messages.h"
 #include "view_direction_classification/common/error.h"
 #include "view_direction_classification/common/quaternion.h"
@@ -34,6 +40,7 @@ namespace {
 using vdc::fuzz::fuzzedDouble;
 using view_direction_classification::GetHeatmap;
 using view_direction_classification::GetNextBestView;
+using view_direction_classification::QueryInstances;
 
 std::shared_ptr<const vdc::ModelBundle> model() {
   static const auto bundle = [] {
@@ -139,6 +146,26 @@ GetNextBestView::Request nextBestViewRequest(FuzzedDataProvider& data) {
   return request;
 }
 
+QueryInstances::Request queryRequest(FuzzedDataProvider& data) {
+  QueryInstances::Request request;
+  request.model = pickString(data, {"", "cube", "other"});
+  request.id = data.ConsumeBool() ? data.ConsumeIntegralInRange(-1, 4)
+                                  : data.ConsumeIntegral<std::int32_t>();
+  request.include_gone = data.ConsumeBool();
+  return request;
+}
+
+void checkQuery(const QueryInstances::Request& request, const QueryInstances::Response& response) {
+  if (response.message.empty()) std::abort();
+  for (std::size_t i = 0; i < response.instances.size(); ++i) {
+    const auto& instance = response.instances[i];
+    if (!request.model.empty() && instance.model != request.model) std::abort();
+    if (request.id != 0 && std::int64_t(instance.id) != request.id) std::abort();
+    if (!request.include_gone && instance.state == instance.GONE) std::abort();
+    if (i > 0 && instance.id < response.instances[i - 1].id) std::abort();
+  }
+}
+
 void checkHeatmap(const GetHeatmap::Response& response, std::size_t surface_points) {
   if (!response.success) {
     if (response.message.empty()) std::abort();
@@ -186,8 +213,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* bytes, std::size_t siz
   if (data.ConsumeBool()) library.emplace_back("cube", model());
   vdc::InformativenessServerRequests server(model(), parameters, lookupFixedFrom, library);
   const int views = server.scorer().viewCount();
+  view_direction_classification::ObjectInstances remembered;  // what the queries ask
   for (int step = 0; step < 4 && data.remaining_bytes() > 0; ++step) {
-    switch (data.ConsumeIntegralInRange(0, 3)) {
+    switch (data.ConsumeIntegralInRange(0, 4)) {
       case 0: {
         GetHeatmap::Response response;
         server.getHeatmap(heatmapRequest(data, views), response);
@@ -208,12 +236,20 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* bytes, std::size_t siz
           // ignored with a throttled warning by the node
         }
         break;
-      default:
+      case 3:
+        remembered = instancesMessage(data);
         try {
-          server.receiveInstances(instancesMessage(data));
+          server.receiveInstances(remembered);
         } catch (const vdc::Error&) {
           // ignored with a throttled warning by the node
         }
+        break;
+      default: {
+        const QueryInstances::Request request = queryRequest(data);
+        QueryInstances::Response response;
+        vdc::answerQuery(request, {"cube", "other"}, remembered.instances, response);
+        checkQuery(request, response);
+      }
     }
   }
   return 0;

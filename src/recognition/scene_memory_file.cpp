@@ -24,11 +24,12 @@ namespace {
 // dataset of 0 rows (absent) or 1 row, so every dataset is always there and a missing one means
 // a damaged file.
 //   /                     attributes format = "view_direction_classification object memory",
-//                         format_version = 1, next_id, instances (their count)
+//                         format_version = 2, next_id, instances (their count)
 //   /instances_named      attribute per model name: instances of it named so far
 //   /instances/<k>        k = 0 .. instances - 1; attributes id, model, name, frames_seen,
-//                         identity_probability, identity_unknown, gone (0/1), absent_frames
-//     gone_since          0 or 1 float64 [s]
+//                         identity_probability, identity_unknown; from version 2 also gone
+//                         (0/1) and absent_frames
+//     gone_since          0 or 1 float64 [s] (version 2; version 1 files load as present)
 //     identity            attribute per model name: identification's probability
 //     centroid_world      3 float64
 //     last_seen           0 or 1 float64 [s]
@@ -42,7 +43,9 @@ namespace {
 //       refined_position             0/1 x 3      refined_position_covariance  0/1 x 9 (row-major)
 //       confirmed_fit_score          0/1
 constexpr char kFormatName[] = "view_direction_classification object memory";
-constexpr std::int64_t kFormatVersion = 1;
+// Version 2 added each instance's presence; version 1 files still load, every instance present.
+constexpr std::int64_t kFormatVersion = 2;
+constexpr std::int64_t kOldestReadableVersion = 1;
 
 // Shape and value checks, with messages naming the dataset as it is called in the file.
 class Checker {
@@ -251,7 +254,17 @@ std::map<std::string, double> readPerModel(const Hdf5File& file, const Checker& 
   return values;
 }
 
-InstanceMemory readInstance(const Hdf5File& file, const Checker& check, const std::string& group) {
+// The presence datasets of version 2 (ObjectInstance::presence).
+void readPresence(const Hdf5File& file, const Checker& check, const std::string& group,
+                  InstanceMemory* m) {
+  m->gone = check.integer(group + "/gone", file.readIntegerAttribute(group, "gone"), 0) != 0;
+  m->absent_frames =
+      check.integer(group + "/absent_frames", file.readIntegerAttribute(group, "absent_frames"), 0);
+  m->gone_since = readOptionalScalar(file, check, group + "/gone_since");
+}
+
+InstanceMemory readInstance(const Hdf5File& file, const Checker& check, const std::string& group,
+                            std::int64_t version) {
   if (!file.exists(group)) check.fail("group " + group + " is missing");
   InstanceMemory m;
   m.id = check.integer(group + "/id", file.readIntegerAttribute(group, "id"), 1);
@@ -268,15 +281,13 @@ InstanceMemory readInstance(const Hdf5File& file, const Checker& check, const st
   check.shape(group + "/centroid_world", centroid, 3, 1);
   m.centroid_world = centroid;
   m.last_seen = readOptionalScalar(file, check, group + "/last_seen");
-  m.gone = check.integer(group + "/gone", file.readIntegerAttribute(group, "gone"), 0) != 0;
-  m.absent_frames =
-      check.integer(group + "/absent_frames", file.readIntegerAttribute(group, "absent_frames"), 0);
-  m.gone_since = readOptionalScalar(file, check, group + "/gone_since");
+  if (version >= 2) readPresence(file, check, group, &m);
   m.estimator = readEstimator(file, check, group + "/estimator");
   return m;
 }
 
-void checkFormat(const Hdf5File& file, const Checker& check) {
+// The file's format version (one this build reads).
+std::int64_t checkFormat(const Hdf5File& file, const Checker& check) {
   std::string format;
   try {
     format = file.readStringAttribute("/", "format");
@@ -285,10 +296,11 @@ void checkFormat(const Hdf5File& file, const Checker& check) {
   }
   if (format != kFormatName) check.fail("not a view_direction_classification object memory");
   const std::int64_t version = file.readIntegerAttribute("/", "format_version");
-  if (version != kFormatVersion) {
+  if (version < kOldestReadableVersion || version > kFormatVersion) {
     check.fail("written in format version " + std::to_string(version) + ", this build reads " +
-               std::to_string(kFormatVersion));
+               std::to_string(kOldestReadableVersion) + " to " + std::to_string(kFormatVersion));
   }
+  return version;
 }
 
 // The memory's values that the file could not hold faithfully (HDF5 stores NaN happily).
@@ -329,7 +341,7 @@ SceneMemory readSceneMemoryFile(const std::string& path) {
   if (std::filesystem::is_directory(status)) throw Error(path + ": is a directory, not a file");
   const Hdf5File file = Hdf5File::openReadOnly(path, path);
   const Checker check(path + ": ");
-  checkFormat(file, check);
+  const std::int64_t version = checkFormat(file, check);
   SceneMemory memory;
   memory.next_id = check.integer("next_id", file.readIntegerAttribute("/", "next_id"), 1);
   const int count = check.integer("instances", file.readIntegerAttribute("/", "instances"), 0);
@@ -340,7 +352,8 @@ SceneMemory readSceneMemoryFile(const std::string& path) {
   }
   if (!file.exists("instances")) check.fail("group instances is missing");
   for (int k = 0; k < count; ++k) {
-    memory.instances.push_back(readInstance(file, check, "instances/" + std::to_string(k)));
+    memory.instances.push_back(
+        readInstance(file, check, "instances/" + std::to_string(k), version));
   }
   return memory;
 }

@@ -14,6 +14,7 @@
 #include <sstream>
 #include <utility>
 
+#include "instance_query.h"
 #include "view_direction_classification/common/error.h"
 #include "view_direction_classification/recognition/scene_memory_file.h"
 #include "view_direction_classification/ros/belief_markers.h"
@@ -21,6 +22,7 @@
 #include "view_direction_classification/ros/cloud_conversions.h"
 #include "view_direction_classification/ros/geometry_conversions.h"
 #include "view_direction_classification/ros/label_image_conversion.h"
+#include "view_direction_classification/ros/memory_markers.h"
 #include "view_direction_classification/scene/label_segmentation.h"
 
 namespace vdc {
@@ -30,6 +32,8 @@ using ObjectInstanceMsg = view_direction_classification::ObjectInstance;
 
 // Label images kept for the clouds still to come: a second of a 30 Hz detector.
 constexpr std::size_t kLabelImageCapacity = 30;
+// ~memory_markers are redrawn this often [s] between frames, so that their ages advance.
+constexpr double kMemoryRedrawPeriod = 1.0;
 
 ModelLibrary loadLibrary(const SceneRosParameters& parameters) {
   return ModelLibrary::load(parameters.models);
@@ -39,18 +43,6 @@ SceneEstimatorParameters withInstanceSettings(SceneEstimatorParameters scene,
                                               const EstimatorParameters& instance) {
   scene.instance = instance;
   return scene;
-}
-
-// The instance's pose for ~instances, its tf frame and its markers.
-struct InstancePose {
-  Eigen::Vector3d position;
-  Eigen::Vector4d orientation;
-};
-
-std::optional<InstancePose> poseOf(const ObjectInstance& instance) {
-  const auto position = instance.estimator->positionEstimate();
-  if (!position) return std::nullopt;
-  return InstancePose{*position, instance.estimator->mapOrientation()};
 }
 
 // A text label above the instance: its name and identity probability.
@@ -81,6 +73,7 @@ SceneEstimatorRos::SceneEstimatorRos(ros::NodeHandle node, ros::NodeHandle priva
       private_node_(private_node),
       parameters_(readEstimatorRosParameters(private_node, private_node.hasParam("models"))),
       scene_parameters_(readSceneRosParameters(private_node, parameters_)),
+      message_settings_{parameters_.position_variance, parameters_.converged_cone90_deg},
       single_object_topics_(!private_node.hasParam("models")),
       from_labels_(parameters_.core.segmentation.mode == SegmentationMode::kLabels),
       label_images_(kLabelImageCapacity),
@@ -92,6 +85,10 @@ SceneEstimatorRos::SceneEstimatorRos(ros::NodeHandle node, ros::NodeHandle priva
   instances_publisher_ =
       private_node_.advertise<view_direction_classification::ObjectInstances>("instances", 1);
   markers_publisher_ = private_node_.advertise<visualization_msgs::MarkerArray>("markers", 1);
+  memory_markers_publisher_ =
+      private_node_.advertise<visualization_msgs::MarkerArray>("memory_markers", 1);
+  memory_timer_ = private_node_.createTimer(ros::Duration(kMemoryRedrawPeriod),
+                                            [this](const ros::TimerEvent&) { redrawMemory(); });
   if (single_object_topics_) {
     estimate_publisher_ = private_node_.advertise<BinghamMixtureMsg>("estimate", 1);
     pose_publisher_ = private_node_.advertise<geometry_msgs::PoseWithCovarianceStamped>("pose", 1);
@@ -99,6 +96,8 @@ SceneEstimatorRos::SceneEstimatorRos(ros::NodeHandle node, ros::NodeHandle priva
   reset_server_ = private_node_.advertiseService("reset", &SceneEstimatorRos::resetService, this);
   reset_instance_server_ = private_node_.advertiseService(
       "reset_instance", &SceneEstimatorRos::resetInstanceService, this);
+  query_server_ =
+      private_node_.advertiseService("query_instances", &SceneEstimatorRos::queryService, this);
   loadMemory();
   save_memory_server_ =
       private_node_.advertiseService("save_memory", &SceneEstimatorRos::saveMemoryService, this);
@@ -138,6 +137,7 @@ SceneEstimatorRos::SceneEstimatorRos(ros::NodeHandle node, ros::NodeHandle priva
 
 SceneEstimatorRos::~SceneEstimatorRos() {
   transforms_timer_.stop();
+  memory_timer_.stop();
   cloud_subscriber_.shutdown();
   labels_subscriber_.shutdown();
   worker_.reset();  // after the subscription: no cloud is offered to a stopped worker
@@ -312,39 +312,15 @@ void SceneEstimatorRos::publishInstances(const std_msgs::Header& cloud_header) {
   visualization_msgs::MarkerArray markers = makeClearMarkers(header);
   std::vector<geometry_msgs::TransformStamped> transforms;
   for (const ObjectInstance& instance : estimator_->instances()) {
-    const std::optional<InstancePose> pose = poseOf(instance);
     // An instance the views no longer support well enough is not published (nor its tf frame)
     // until they do again, or it is dropped. A gone one is listed with its last pose and its
     // state, but has no tf frame and no markers: nothing stands there.
-    if (!pose || !estimator_->identified(instance)) continue;
-    const bool gone = instance.presence.state == InstanceState::kGone;
-    const OrientationEstimator& estimator = *instance.estimator;
-    ObjectInstanceMsg entry;
-    entry.id = static_cast<std::uint32_t>(instance.id);
-    entry.name = instance.name;
-    entry.model = estimator_->library().models()[instance.model].name;
-    entry.identity_probability = instance.identity_probability;
-    entry.pose =
-        toPoseWithCovarianceMsg(pose->position, pose->orientation,
-                                estimator.positionCovariance().value_or(
-                                    parameters_.position_variance * Eigen::Matrix3d::Identity()),
-                                estimator.orientationCovariance());
-    entry.belief = toBinghamMixtureMsg(estimator.belief());
-    entry.belief.header = header;
-    entry.belief.object_id = instance.name;
-    entry.belief.map_orientation = toQuaternionMsg(pose->orientation);
-    entry.belief.entropy = estimator.entropy();
-    entry.views_fused = entry.belief.views_fused =
-        static_cast<std::uint32_t>(estimator.viewsFused());
-    entry.cone90_deg = entry.belief.cone90_deg = estimator.spread().cone90 * 180.0 / M_PI;
-    entry.converged = entry.belief.converged = entry.cone90_deg <= parameters_.converged_cone90_deg;
-    entry.last_seen = instance.last_seen ? ros::Time(*instance.last_seen) : ros::Time();
-    entry.state = gone ? ObjectInstanceMsg::GONE : ObjectInstanceMsg::PRESENT;
-    if (gone && instance.presence.gone_since) {
-      entry.gone_since = ros::Time(*instance.presence.gone_since);
-    }
-    message->instances.push_back(entry);
-    if (gone) continue;
+    const std::optional<ObjectInstanceMsg> entry =
+        toObjectInstanceMsg(*estimator_, instance, header, message_settings_);
+    if (!entry) continue;
+    message->instances.push_back(*entry);
+    if (entry->state == ObjectInstanceMsg::GONE) continue;
+    const std::optional<InstancePose> pose = reportedPose(*estimator_, instance);
 
     const visualization_msgs::MarkerArray axes = makeBeliefMarkers(
         header, instance.name, pose->position, pose->orientation, {}, parameters_.marker_length);
@@ -363,6 +339,7 @@ void SceneEstimatorRos::publishInstances(const std_msgs::Header& cloud_header) {
   instances_publisher_.publish(message);
   if (single_object_topics_) publishPrimary(*message, &transforms);
   if (markers_publisher_.getNumSubscribers() > 0) markers_publisher_.publish(markers);
+  publishMemoryMarkers(message->instances);
   if (!parameters_.publish_tf) return;
   if (!transforms.empty()) tf_broadcaster_.sendTransform(transforms);
   std::lock_guard<std::mutex> lock(transforms_mutex_);
@@ -413,6 +390,46 @@ void SceneEstimatorRos::rebroadcastTransforms() {
 void SceneEstimatorRos::forgetTransforms() {
   std::lock_guard<std::mutex> lock(transforms_mutex_);
   transforms_.clear();
+}
+
+std_msgs::Header SceneEstimatorRos::memoryHeader() const {
+  std_msgs::Header header;
+  header.stamp = last_stamp_;
+  header.frame_id = parameters_.fixed_frame;
+  return header;
+}
+
+std::vector<ObjectInstanceMsg> SceneEstimatorRos::memory() const {
+  return reportedInstances(*estimator_, memoryHeader(), message_settings_);
+}
+
+bool SceneEstimatorRos::queryService(
+    view_direction_classification::QueryInstances::Request& request,
+    view_direction_classification::QueryInstances::Response& response) {
+  std::vector<std::string> models;
+  std::lock_guard<std::mutex> lock(estimator_mutex_);
+  for (const LibraryModel& model : estimator_->library().models()) models.push_back(model.name);
+  response.header = memoryHeader();
+  // Answered from the memory now, not from the last ~instances: a reset since is seen.
+  answerQuery(request, models, memory(), response);
+  return true;
+}
+
+// Called with estimator_mutex_ held.
+void SceneEstimatorRos::publishMemoryMarkers(const std::vector<ObjectInstanceMsg>& all) {
+  if (memory_markers_publisher_.getNumSubscribers() == 0) return;
+  memory_markers_publisher_.publish(makeMemoryMarkers(memoryHeader(), all, ros::Time::now(),
+                                                      scene_parameters_.memory_fade_age,
+                                                      0.5 * parameters_.marker_length));
+}
+
+void SceneEstimatorRos::redrawMemory() {
+  if (memory_markers_publisher_.getNumSubscribers() == 0) return;
+  // The worker holds the lock through a frame and publishes the markers when it is done: a
+  // redraw now would only wait for it.
+  std::unique_lock<std::mutex> lock(estimator_mutex_, std::try_to_lock);
+  if (!lock.owns_lock()) return;
+  publishMemoryMarkers(memory());
 }
 
 void SceneEstimatorRos::skip(const std::string& reason) {

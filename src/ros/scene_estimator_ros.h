@@ -10,6 +10,7 @@
 #include <tf2_ros/transform_broadcaster.h>
 #include <tf2_ros/transform_listener.h>
 #include <view_direction_classification/ObjectInstances.h>
+#include <view_direction_classification/QueryInstances.h>
 #include <view_direction_classification/ResetInstance.h>
 
 #include <cstdint>
@@ -19,6 +20,7 @@
 #include <vector>
 
 #include "estimator_ros_parameters.h"
+#include "instance_messages.h"
 #include "label_image_buffer.h"
 #include "newest_cloud_worker.h"
 #include "scene_ros_parameters.h"
@@ -31,8 +33,9 @@ namespace vdc {
 // every known object of the scene. Each cloud (camera pose from tf2) goes to the core's
 // SceneEstimator, which segments it, identifies the candidates against the library and keeps one
 // estimator per instance; this class publishes ~instances, one tf frame per instance
-// (fixed_frame -> "<model>_<n>", re-sent at ~tf_rate), ~markers with labels, serves ~reset and
-// ~reset_instance and reports diagnostics. As in OrientationEstimatorRos, the callback keeps only
+// (fixed_frame -> "<model>_<n>", re-sent at ~tf_rate), ~markers with labels and
+// ~memory_markers (every remembered instance, faded by age), serves ~reset, ~reset_instance and
+// ~query_instances and reports diagnostics. As in OrientationEstimatorRos, the callback keeps only
 // the newest cloud and one worker thread processes it; nothing a message contains ends the node.
 // With segmentation `labels` the candidates are a detector's instance masks: each cloud takes the
 // label image (`labels`) of its stamp, and a cloud without a usable one is skipped.
@@ -73,11 +76,23 @@ class SceneEstimatorRos {
   std::string saveMemory();
   bool saveMemoryService(std_srvs::Trigger::Request& request,
                          std_srvs::Trigger::Response& response);
+  // The object memory's question and its view (instance_query.h, memory_markers.h). These three
+  // are called with estimator_mutex_ held: the fixed frame and the last cloud's stamp, the
+  // instances as ~instances lists them, and ~memory_markers of them (while subscribed).
+  std_msgs::Header memoryHeader() const;
+  std::vector<view_direction_classification::ObjectInstance> memory() const;
+  void publishMemoryMarkers(const std::vector<view_direction_classification::ObjectInstance>& all);
+  // Takes estimator_mutex_: waits for a frame being processed.
+  bool queryService(view_direction_classification::QueryInstances::Request& request,
+                    view_direction_classification::QueryInstances::Response& response);
+  // The timer's redraw, so ages advance while no frame is segmented; skipped while a frame is.
+  void redrawMemory();
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
 
   ros::NodeHandle node_, private_node_;
   EstimatorRosParameters parameters_;
   SceneRosParameters scene_parameters_;
+  InstanceMessageSettings message_settings_;
   // A library of one from ~model (segmentation `scene`): also ~estimate, ~pose, object_frame.
   bool single_object_topics_ = false;
   // segmentation `labels`: the candidates come from the label images.
@@ -97,9 +112,11 @@ class SceneEstimatorRos {
   std::vector<geometry_msgs::TransformStamped> transforms_;
   ros::Timer transforms_timer_;
   ros::Publisher instances_publisher_, markers_publisher_, estimate_publisher_, pose_publisher_;
-  ros::ServiceServer reset_server_, reset_instance_server_, save_memory_server_;
   // Why ~memory_file must not be saved over (it exists and could not be loaded); empty: it may.
   std::string memory_refused_;
+  ros::Publisher memory_markers_publisher_;
+  ros::Timer memory_timer_;
+  ros::ServiceServer reset_server_, reset_instance_server_, save_memory_server_, query_server_;
   ros::Subscriber cloud_subscriber_, labels_subscriber_;
   diagnostic_updater::Updater diagnostics_;
   ros::Timer diagnostics_timer_;

@@ -58,7 +58,8 @@ ParameterTable<SceneRosParameters> makeTable() {
       .add("labels_stamp_tolerance", &P::labels_stamp_tolerance,
            numberAtLeast(0.0, "0: the cloud's stamp exactly"))
       .add("labels_timeout", &P::labels_timeout, numberAtLeast(0.0))
-      .add("memory_file", &P::memory_file, anyString());
+      .add("memory_file", &P::memory_file, anyString())
+      .add("memory_fade_age", &P::memory_fade_age, numberAbove(0.0));
   return table;
 }
 

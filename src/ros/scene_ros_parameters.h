@@ -29,6 +29,9 @@ struct SceneRosParameters {
   // The object memory (recognition/scene_memory_file.h): loaded at start-up when it exists,
   // saved at shutdown and on ~save_memory. Empty: nothing outlives the node.
   std::string memory_file;
+  // ~memory_markers: a remembered instance's markers fade by half (above a floor) every this
+  // many seconds since it was last seen.
+  double memory_fade_age = 60.0;
 };
 
 // The scene settings' names, fields and rules (scene_ros_parameters.cpp).

@@ -275,11 +275,21 @@ TEST_F(SceneMemoryFile, AnotherFormatVersionIsRefused) {
   {
     WritableFile file(damaged);
     const hid_t attribute = H5Aopen(file.id(), "format_version", H5P_DEFAULT);
-    const std::int64_t version = 2;
+    const std::int64_t version = 3;
     ASSERT_GE(H5Awrite(attribute, H5T_NATIVE_INT64, &version), 0);
     H5Aclose(attribute);
   }
-  expectRefused(damaged, "format version 2");
+  expectRefused(damaged, "format version 3");
+}
+
+// The fuzzer's seed (fuzz/corpus/scene_memory/one_mug.h5) was written in version 1, before the
+// presence was saved: it loads, its instance present.
+TEST_F(SceneMemoryFile, AVersionOneFileLoadsWithEveryInstancePresent) {
+  SceneEstimator restarted = makeEstimator();
+  loadSceneMemory(std::string(VDC_SOURCE_DIR) + "/fuzz/corpus/scene_memory/one_mug.h5", &restarted);
+  ASSERT_EQ(restarted.instances().size(), 1u);
+  EXPECT_EQ(restarted.instances().front().presence.state, InstanceState::kPresent);
+  EXPECT_EQ(restarted.instances().front().presence.absent_frames, 0);
 }
 
 TEST_F(SceneMemoryFile, AModelBundleIsNoMemory) {
