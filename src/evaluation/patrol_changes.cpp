@@ -109,12 +109,14 @@ class ChangeMaker {
               std::mt19937& rng, PatrolScene* scene)
       : models_(models), settings_(settings), rng_(rng), scene_(*scene) {}
 
-  std::optional<PatrolChange> next() {
-    std::bernoulli_distribution distractor(settings_.distractor_share);
-    if (distractor(rng_)) {
+  // kind: what the change was drawn to be (drawKinds); a distractor that finds no place makes
+  // it a known object's move.
+  std::optional<PatrolChange> next(PatrolChangeKind kind) {
+    if (kind == PatrolChangeKind::kDistractorMoved) {
       if (auto change = moveDistractor()) return change;
+      kind = PatrolChangeKind::kMoved;
     }
-    return changeKnown();
+    return changeKnown(kind);
   }
 
  private:
@@ -128,14 +130,15 @@ class ChangeMaker {
     return found;
   }
 
-  std::optional<PatrolChange> changeKnown() {
+  // A move or an addition that finds no place becomes a removal; without a present object,
+  // the change is an addition.
+  std::optional<PatrolChange> changeKnown(PatrolChangeKind kind) {
     const std::vector<std::size_t> present = unchanged(true);
-    std::uniform_int_distribution<int> kind(0, 2);
-    const int drawn = present.empty() ? 2 : kind(rng_);
-    if (drawn == 0) {
+    if (present.empty()) kind = PatrolChangeKind::kAdded;
+    if (kind == PatrolChangeKind::kMoved) {
       if (auto change = move(pickOne(present, rng_))) return change;
     }
-    if (drawn == 2) {
+    if (kind == PatrolChangeKind::kAdded) {
       if (auto change = add()) return change;
     }
     if (present.empty()) return std::nullopt;
@@ -229,6 +232,22 @@ class ChangeMaker {
   std::set<int> changed_objects_, changed_distractors_;
 };
 
+// Every change's kind, drawn before any is made, so that the kinds do not depend on how many
+// draws finding the places took.
+std::vector<PatrolChangeKind> drawKinds(const PatrolChangeSettings& settings, std::mt19937& rng) {
+  std::bernoulli_distribution distractor(settings.distractor_share);
+  std::uniform_int_distribution<int> known(0, 2);
+  constexpr PatrolChangeKind kKnownKinds[] = {PatrolChangeKind::kMoved, PatrolChangeKind::kRemoved,
+                                              PatrolChangeKind::kAdded};
+  std::vector<PatrolChangeKind> kinds;
+  for (int c = 0; c < settings.changes; ++c) {
+    const bool moves_distractor = distractor(rng);
+    const PatrolChangeKind kind = kKnownKinds[known(rng)];
+    kinds.push_back(moves_distractor ? PatrolChangeKind::kDistractorMoved : kind);
+  }
+  return kinds;
+}
+
 }  // namespace
 
 PatrolScene patrolSceneOf(const TableScene& scene) {
@@ -293,8 +312,8 @@ std::vector<PatrolChange> applyRandomChanges(const std::vector<KnownModel>& mode
   checkPatrolChangeSettings(settings);
   ChangeMaker maker(models, settings, rng, scene);
   std::vector<PatrolChange> changes;
-  for (int c = 0; c < settings.changes; ++c) {
-    if (auto change = maker.next()) changes.push_back(*change);
+  for (const PatrolChangeKind kind : drawKinds(settings, rng)) {
+    if (auto change = maker.next(kind)) changes.push_back(*change);
   }
   return changes;
 }
