@@ -17,18 +17,6 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
       .count();
 }
 
-ModelLibrary libraryOf(const std::vector<SceneEvaluationModel>& models) {
-  std::vector<std::pair<std::string, std::shared_ptr<const ModelBundle>>> entries;
-  for (const SceneEvaluationModel& model : models) entries.emplace_back(model.name, model.bundle);
-  return ModelLibrary(std::move(entries));
-}
-
-std::vector<KnownModel> knownModelsOf(const std::vector<SceneEvaluationModel>& models) {
-  std::vector<KnownModel> known;
-  for (const SceneEvaluationModel& model : models) known.push_back({model.name, model.mesh});
-  return known;
-}
-
 void countCandidates(const SceneUpdate& update, SceneViewRecord* record) {
   record->segmented = update.segmented;
   record->segmentation_ms = update.segmentation_ms;
@@ -75,6 +63,18 @@ void evaluateScene(int scene_index, const std::vector<SceneEvaluationModel>& mod
 }
 
 }  // namespace
+
+ModelLibrary libraryOf(const std::vector<SceneEvaluationModel>& models) {
+  std::vector<std::pair<std::string, std::shared_ptr<const ModelBundle>>> entries;
+  for (const SceneEvaluationModel& model : models) entries.emplace_back(model.name, model.bundle);
+  return ModelLibrary(std::move(entries));
+}
+
+std::vector<KnownModel> knownModelsOf(const std::vector<SceneEvaluationModel>& models) {
+  std::vector<KnownModel> known;
+  for (const SceneEvaluationModel& model : models) known.push_back({model.name, model.mesh});
+  return known;
+}
 
 void checkSceneEvaluationSettings(const SceneEvaluationSettings& settings) {
   if (settings.scenes < 1) throw Error("scene evaluation: scenes must be at least 1");

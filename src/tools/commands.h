@@ -13,5 +13,6 @@ void addInspectCommand(CLI::App& app);
 void addHeatmapCommand(CLI::App& app);
 void addEvaluateCommand(CLI::App& app);
 void addEvaluateScenesCommand(CLI::App& app);
+void addEvaluatePatrolCommand(CLI::App& app);
 
 }  // namespace vdc::tools

@@ -35,20 +35,6 @@ struct EvaluateScenesOptions {
   SceneEvaluationSettings settings;
 };
 
-std::vector<SceneEvaluationModel> loadLibrary(const std::vector<std::string>& specs) {
-  std::vector<SceneEvaluationModel> models;
-  for (const std::string& spec : specs) models.push_back(loadSceneModel(parseSceneModelSpec(spec)));
-  return models;
-}
-
-std::vector<TriangleMesh> loadDistractors(const std::vector<std::string>& specs) {
-  std::vector<TriangleMesh> meshes;
-  for (const std::string& spec : specs.empty() ? defaultDistractors() : specs) {
-    meshes.push_back(distractorMesh(spec));
-  }
-  return meshes;
-}
-
 fs::path writeCsvFile(const std::vector<SceneViewRecord>& records, const std::string& out_dir) {
   std::error_code error;
   fs::create_directories(out_dir, error);
@@ -64,8 +50,8 @@ void runEvaluateScenes(EvaluateScenesOptions options) {
   const auto start = std::chrono::steady_clock::now();
   // Refinement's registration logs at INFO level; keep the terminal to the progress bar.
   pcl::console::setVerbosityLevel(pcl::console::L_ERROR);
-  const std::vector<SceneEvaluationModel> models = loadLibrary(options.models);
-  const std::vector<TriangleMesh> distractors = loadDistractors(options.distractors);
+  const std::vector<SceneEvaluationModel> models = loadSceneModels(options.models);
+  const std::vector<TriangleMesh> distractors = loadDistractorMeshes(options.distractors);
   options.settings.noise = !options.no_noise;
   checkSceneEvaluationSettings(options.settings);
   std::fprintf(stderr,

@@ -59,6 +59,12 @@ SceneEvaluationModel loadSceneModel(const SceneModelSpec& spec) {
           loadMesh(spec.mesh_path)};
 }
 
+std::vector<SceneEvaluationModel> loadSceneModels(const std::vector<std::string>& specs) {
+  std::vector<SceneEvaluationModel> models;
+  for (const std::string& spec : specs) models.push_back(loadSceneModel(parseSceneModelSpec(spec)));
+  return models;
+}
+
 TriangleMesh distractorMesh(const std::string& text) {
   if (text.rfind("box:", 0) == 0) {
     const auto sizes = positiveNumbers(text.substr(4), 3, text);
@@ -79,6 +85,14 @@ TriangleMesh distractorMesh(const std::string& text) {
 std::vector<std::string> defaultDistractors() {
   return {"box:0.09,0.08,0.10", "box:0.16,0.06,0.05", "box:0.06,0.06,0.18", "cylinder:0.035,0.11",
           "cylinder:0.025,0.20"};
+}
+
+std::vector<TriangleMesh> loadDistractorMeshes(const std::vector<std::string>& specs) {
+  std::vector<TriangleMesh> meshes;
+  for (const std::string& spec : specs.empty() ? defaultDistractors() : specs) {
+    meshes.push_back(distractorMesh(spec));
+  }
+  return meshes;
 }
 
 }  // namespace vdc::tools

@@ -17,6 +17,9 @@ SceneModelSpec parseSceneModelSpec(const std::string& text);
 // Loads the bundle and the mesh; throws vdc::Error naming the file that cannot be loaded.
 SceneEvaluationModel loadSceneModel(const SceneModelSpec& spec);
 
+// Every `--model` spec loaded, in order.
+std::vector<SceneEvaluationModel> loadSceneModels(const std::vector<std::string>& specs);
+
 // `--distractor`: "box:X,Y,Z" (full sizes [m]), "cylinder:R,H" ([m]), "carton:X,Y,Z,GABLE[,FIN]"
 // (makeCartonMesh [m]) or a mesh file (metres).
 // Throws vdc::Error quoting the text for a malformed primitive or a mesh that cannot be loaded.
@@ -24,5 +27,7 @@ TriangleMesh distractorMesh(const std::string& text);
 // The distractors when none is given: boxes and cylinders of household sizes, some of a mug's
 // size so that they fit the models' extents and must be told apart by shape.
 std::vector<std::string> defaultDistractors();
+// Every `--distractor` spec's mesh, or the default distractors' when there is none.
+std::vector<TriangleMesh> loadDistractorMeshes(const std::vector<std::string>& specs);
 
 }  // namespace vdc::tools

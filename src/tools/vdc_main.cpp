@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   vdc::tools::addHeatmapCommand(app);
   vdc::tools::addEvaluateCommand(app);
   vdc::tools::addEvaluateScenesCommand(app);
+  vdc::tools::addEvaluatePatrolCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

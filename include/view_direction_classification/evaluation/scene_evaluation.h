@@ -35,6 +35,11 @@ struct SceneEvaluationSettings {
   SceneEstimatorParameters estimator;
 };
 
+// The library of the models (their names and bundles), and the models as the scene generator
+// places them (their names and meshes); shared with the patrol evaluation.
+ModelLibrary libraryOf(const std::vector<SceneEvaluationModel>& models);
+std::vector<KnownModel> knownModelsOf(const std::vector<SceneEvaluationModel>& models);
+
 // Throws vdc::Error naming the first bad setting.
 void checkSceneEvaluationSettings(const SceneEvaluationSettings& settings);
 
