@@ -1,7 +1,5 @@
 #include "view_direction_classification/recognition/scene_memory_file.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -318,20 +316,7 @@ void checkWritable(const SceneMemory& memory, const Checker& check) {
 void writeSceneMemoryFile(const SceneMemory& memory, const std::string& path) {
   const Checker check(path + ": not saved: ");
   checkWritable(memory, check);
-  // Same directory as the target, so the final rename is atomic (no cross-device move).
-  const std::string temporary = path + ".tmp-" + std::to_string(::getpid());
-  try {
-    Hdf5File file = Hdf5File::create(temporary, path);
-    writeMemory(file, memory);
-    file.close();
-    std::error_code error;
-    std::filesystem::rename(temporary, path, error);
-    if (error) throw Error(path + ": cannot replace the file: " + error.message());
-  } catch (...) {
-    std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
-    throw;
-  }
+  Hdf5File::writeAtomically(path, [&](Hdf5File& file) { writeMemory(file, memory); });
 }
 
 SceneMemory readSceneMemoryFile(const std::string& path) {

@@ -1,10 +1,14 @@
 #include "hdf5_file.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <array>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <string>
+#include <system_error>
 #include <utility>
 #include <vector>
 
@@ -91,6 +95,24 @@ int superblockVersion(const std::string& path) {
 }  // namespace
 
 void silenceHdf5ErrorPrinting() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
+
+void Hdf5File::writeAtomically(const std::string& path,
+                               const std::function<void(Hdf5File&)>& write) {
+  // Same directory as the target, so the final rename is atomic (no cross-device move).
+  const std::string temporary = path + ".tmp-" + std::to_string(::getpid());
+  try {
+    Hdf5File file = create(temporary, path);
+    write(file);
+    file.close();
+    std::error_code error;
+    std::filesystem::rename(temporary, path, error);
+    if (error) throw Error(path + ": cannot replace the file: " + error.message());
+  } catch (...) {
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+    throw;
+  }
+}
 
 Hdf5File Hdf5File::create(const std::string& path, const std::string& label) {
   silenceHdf5ErrorPrinting();

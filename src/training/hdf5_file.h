@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,10 @@ class Hdf5File {
   // `label` prefixes every error message (normally the path the user gave).
   static Hdf5File create(const std::string& path, const std::string& label);
   static Hdf5File openReadOnly(const std::string& path, const std::string& label);
+  // Creates `path` by `write` on a temporary file beside it, renamed over it once closed: a
+  // crash or an error mid-write leaves the previous file as it was (the temporary is removed).
+  // Errors are labelled with `path`.
+  static void writeAtomically(const std::string& path, const std::function<void(Hdf5File&)>& write);
 
   Hdf5File(Hdf5File&& other) noexcept;
   Hdf5File& operator=(Hdf5File&&) = delete;

@@ -1,7 +1,5 @@
 #include "view_direction_classification/training/model_bundle.h"
 
-#include <unistd.h>
-
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -385,20 +383,7 @@ void saveModelBundle(const ModelBundle& bundle, const std::string& path) {
   const ClassifierArrays arrays = arraysOf(bundle.classifier);
   checkBundle(check, bundle, arrays);
 
-  // Same directory as the target, so the final rename is atomic (no cross-device move).
-  const std::string temporary = path + ".tmp-" + std::to_string(::getpid());
-  try {
-    Hdf5File file = Hdf5File::create(temporary, path);
-    writeBundle(file, bundle, arrays);
-    file.close();
-    std::error_code error;
-    std::filesystem::rename(temporary, path, error);
-    if (error) throw Error(path + ": cannot replace the file: " + error.message());
-  } catch (...) {
-    std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
-    throw;
-  }
+  Hdf5File::writeAtomically(path, [&](Hdf5File& file) { writeBundle(file, bundle, arrays); });
 }
 
 ModelBundle loadModelBundle(const std::string& path) {
