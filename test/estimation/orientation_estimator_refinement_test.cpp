@@ -4,6 +4,7 @@
 #include <random>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "support/quick_mug_model.h"
 #include "view_direction_classification/common/error.h"
@@ -32,6 +33,11 @@ class EstimatorRefinementTest : public ::testing::Test {
   static Eigen::Vector4d truth() {
     return quaternionFromRotationMatrix(worldFromObject().linear());
   }
+  // The estimators fed two views whose camera poses are reported as if the mug stood upside
+  // down (half a turn about its x axis through its origin): each belief becomes sure of that
+  // pose. Returns the view from above that then sees the opening where that pose has the base.
+  static std::pair<pcl::PointCloud<pcl::PointXYZ>, Eigen::Isometry3d> sureOfTheUpsideDownMug(
+      const std::vector<OrientationEstimator*>& estimators);
   // The handle seen from the side and above, with noise.
   static std::pair<pcl::PointCloud<pcl::PointXYZ>, Eigen::Isometry3d> handleView() {
     const Eigen::Isometry3d camera_from_object =
@@ -134,25 +140,30 @@ std::pair<pcl::PointCloud<pcl::PointXYZ>, Eigen::Isometry3d> viewFromSide(
           world_from_object * camera_from_object.inverse()};
 }
 
-TEST_F(EstimatorRefinementTest, AViewTheSureBeliefCannotExplainRebuildsIt) {
-  // The first views' camera poses are reported as if the mug stood upside down (half a turn
-  // about its x axis through its origin): the belief becomes sure of that pose. A view from above
-  // then sees the opening where that pose has the base.
+std::pair<pcl::PointCloud<pcl::PointXYZ>, Eigen::Isometry3d>
+EstimatorRefinementTest::sureOfTheUpsideDownMug(
+    const std::vector<OrientationEstimator*>& estimators) {
   Eigen::Isometry3d upside_down = Eigen::Isometry3d::Identity();
   upside_down.linear() = Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitX()).toRotationMatrix();
-  const Eigen::Isometry3d wrong = worldFromObject() * upside_down;
+  const Eigen::Isometry3d world_from_object = worldFromObject();
+  const Eigen::Isometry3d wrong = world_from_object * upside_down;
   const auto [first, world_from_camera] = handleView();
-  const Eigen::Isometry3d reported = wrong * worldFromObject().inverse() * world_from_camera;
+  const Eigen::Isometry3d reported = wrong * world_from_object.inverse() * world_from_camera;
   const auto [side, side_reported] = viewFromSide(wrong);
-  const auto [second, second_pose] = viewFromAbove(worldFromObject());
+  for (OrientationEstimator* estimator : estimators) {
+    EXPECT_TRUE(estimator->update(first, reported).updated);
+    EXPECT_TRUE(estimator->update(side, side_reported).updated);
+  }
+  return viewFromAbove(world_from_object);
+}
 
+TEST_F(EstimatorRefinementTest, AViewTheSureBeliefCannotExplainRebuildsIt) {
   OrientationEstimator checked(model(), withIcp());
   EstimatorParameters unchecked_parameters = withIcp();
   unchecked_parameters.belief_check.search_below_score = 0.0;
   OrientationEstimator unchecked(model(), unchecked_parameters);
+  const auto [second, second_pose] = sureOfTheUpsideDownMug({&checked, &unchecked});
   for (OrientationEstimator* estimator : {&checked, &unchecked}) {
-    ASSERT_TRUE(estimator->update(first, reported).updated);
-    ASSERT_TRUE(estimator->update(side, side_reported).updated);
     ASSERT_GT(rotationErrorDeg(estimator->mapOrientation(), truth()), 170.0);
   }
   const ViewUpdate update = checked.update(second, second_pose);
@@ -172,19 +183,9 @@ TEST_F(EstimatorRefinementTest, AViewTheSureBeliefCannotExplainRebuildsIt) {
 // The scene layer defers the search (BeliefSearch::kDeferred) and completes it only when no
 // model explains a candidate at once: completed, it must do what it does at once.
 TEST_F(EstimatorRefinementTest, ADeferredSearchCompletedRebuildsTheBeliefAsOneAtOnce) {
-  Eigen::Isometry3d upside_down = Eigen::Isometry3d::Identity();
-  upside_down.linear() = Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitX()).toRotationMatrix();
-  const Eigen::Isometry3d wrong = worldFromObject() * upside_down;
-  const auto [first, world_from_camera] = handleView();
-  const Eigen::Isometry3d reported = wrong * worldFromObject().inverse() * world_from_camera;
-  const auto [side, side_reported] = viewFromSide(wrong);
-  const auto [second, second_pose] = viewFromAbove(worldFromObject());
   OrientationEstimator at_once(model(), withIcp());
   OrientationEstimator deferred(model(), withIcp());
-  for (OrientationEstimator* estimator : {&at_once, &deferred}) {
-    ASSERT_TRUE(estimator->update(first, reported).updated);
-    ASSERT_TRUE(estimator->update(side, side_reported).updated);
-  }
+  const auto [second, second_pose] = sureOfTheUpsideDownMug({&at_once, &deferred});
   const ViewUpdate searched = at_once.update(second, second_pose);
   ASSERT_TRUE(searched.searched);
 
