@@ -105,16 +105,19 @@ void addEvaluateScenesCommand(CLI::App& app) {
   // The scene estimator's identity settings and the instances' refinement views: the node's
   // identity_unknown_score, identity_min_probability and refinement_views.
   IdentificationParameters& identity = s.estimator.identification;
-  command->add_option("--unknown-score", identity.unknown_score,
-                      "verification score of \"unknown\" (identity_unknown_score)")
+  command
+      ->add_option("--unknown-score", identity.unknown_score,
+                   "verification score of \"unknown\" (identity_unknown_score)")
       ->capture_default_str()
       ->check(CLI::Range(-1.0, 1.0));
-  command->add_option("--min-probability", identity.min_probability,
-                      "identity probability from which an instance is reported")
+  command
+      ->add_option("--min-probability", identity.min_probability,
+                   "identity probability from which an instance is reported")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 1.0));
-  command->add_option("--refinement-views", s.estimator.instance.refinement_views,
-                      "views each instance's refinement aligns and verifies together")
+  command
+      ->add_option("--refinement-views", s.estimator.instance.refinement_views,
+                   "views each instance's refinement aligns and verifies together")
       ->capture_default_str()
       ->check(CLI::Range(1, 10));
   command->callback([options] { runEvaluateScenes(*options); });
