@@ -9,19 +9,13 @@
 #include "patrol_evaluation_csv.h"
 #include "patrol_evaluation_summary.h"
 #include "support/quick_mug_model.h"
+#include "support/split_text.h"
 #include "view_direction_classification/geometry/mug_mesh.h"
 
 namespace vdc::tools {
 namespace {
 
-std::vector<std::string> split(const std::string& text, char separator) {
-  std::vector<std::string> parts;
-  std::stringstream stream(text);
-  std::string part;
-  while (std::getline(stream, part, separator)) parts.push_back(part);
-  if (separator != '\n' && !text.empty() && text.back() == separator) parts.push_back("");
-  return parts;
-}
+using test::split;
 
 // One mug alone on the table, seen on three views per pass, taken away before the second pass.
 const PatrolResult& mugTakenAway() {

@@ -11,21 +11,14 @@
 #include "scene_evaluation_options.h"
 #include "scene_evaluation_summary.h"
 #include "support/quick_mug_model.h"
+#include "support/split_text.h"
 #include "view_direction_classification/common/error.h"
 #include "view_direction_classification/geometry/mug_mesh.h"
 
 namespace vdc::tools {
 namespace {
 
-std::vector<std::string> split(const std::string& text, char separator) {
-  std::vector<std::string> parts;
-  std::stringstream stream(text);
-  std::string part;
-  while (std::getline(stream, part, separator)) parts.push_back(part);
-  // getline drops an empty last field ("a,b," has three cells); a last newline ends a line.
-  if (separator != '\n' && !text.empty() && text.back() == separator) parts.push_back("");
-  return parts;
-}
+using test::split;
 
 TEST(SceneEvaluationOptions, AModelIsNameEqualsBundleColonMesh) {
   const SceneModelSpec spec = parseSceneModelSpec("mug=/tmp/models/mug.h5:/tmp/mug.ply");
