@@ -75,8 +75,9 @@ struct Identification {
 // ShapeAlternative). points and scene in the camera frame. allowed (per library model; empty:
 // all) leaves the other models untried: a detector's class names the one model it may be.
 // The models' searches beyond their beliefs (belief_check.h) run only when no model's own
-// belief gave a pose verifying at the search's threshold (search_below_score): a model that
-// explains the candidate at once settles what the others' searches could only lower.
+// belief gave a pose verifying at the search's threshold (search_below_score): on known objects
+// the others' searches never beat a model that explains the candidate at once
+// (doc/evaluation.md), and they are most of the cost.
 Identification identifyCandidate(
     const ModelLibrary& library, const EstimatorParameters& instance_parameters,
     const pcl::PointCloud<pcl::PointXYZ>& points, const Eigen::Vector3d& candidate_sides,
