@@ -7,7 +7,7 @@
 #include <utility>
 
 #include "view_direction_classification/common/error.h"
-#include "view_direction_classification/common/quaternion.h"
+#include "view_direction_classification/recognition/instance_overlap.h"
 #include "view_direction_classification/recognition/scene_estimator.h"
 
 namespace vdc {
@@ -45,14 +45,6 @@ void nearestDepths(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& points,
     if (index[i] < 0 || squared[i] > radius * radius) continue;
     (*depths)[i] = std::min((*depths)[i], (*points)[index[i]].z);
   }
-}
-
-Eigen::Isometry3d believedPose(const OrientationEstimator& estimator,
-                               const Eigen::Vector3d& position) {
-  Eigen::Isometry3d world_from_object = Eigen::Isometry3d::Identity();
-  world_from_object.linear() = quaternionToRotationMatrix(estimator.mapOrientation());
-  world_from_object.translation() = position;
-  return world_from_object;
 }
 
 PresenceEvidence evidenceOf(const PresenceCheck& check) {
@@ -166,11 +158,9 @@ std::vector<int> InstancePresence::observe(std::vector<ObjectInstance>& instance
     }
     // A gone instance stays gone until a candidate is associated with it or it is found moved.
     if (presence.state == InstanceState::kGone) continue;
-    const auto position = instance.estimator->positionEstimate();
-    if (!position) continue;
-    record(check(instance.model, believedPose(*instance.estimator, *position), scene,
-                 world_from_camera),
-           time, &presence);
+    const std::optional<Eigen::Isometry3d> pose = believedPose(*instance.estimator);
+    if (!pose) continue;
+    record(check(instance.model, *pose, scene, world_from_camera), time, &presence);
     if (presence.state == InstanceState::kGone) marked_gone.push_back(instance.id);
   }
   return marked_gone;

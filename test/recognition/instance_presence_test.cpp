@@ -232,6 +232,23 @@ TEST(InstancePresence, AMugMovedTenCentimetresIsFollowedNotDuplicated) {
   EXPECT_LT((*position - nearby.translation()).norm(), 0.02);
 }
 
+// Moved towards the camera, the mug hides its old place, which is never seen free; its centroid
+// moved beyond association_distance. Still the same mug: both would fill one space.
+TEST(InstancePresence, AMugMovedInFrontOfItsOldPlaceIsFollowedNotDuplicated) {
+  SceneEstimator estimator = makeEstimator();
+  const int id = mugFoundAtA(estimator).id;
+  const Eigen::Vector3d towards_camera = Eigen::Vector3d(kView1.x(), kView1.y(), 0.0).normalized();
+  const Eigen::Isometry3d nearer = placed(kMugPosition + 0.06 * towards_camera, 0.7);
+  const SceneUpdate update =
+      look(estimator, tableWith({mugAt(nearer)}), worldFromCamera(kView1), 1.0);
+  ASSERT_EQ(estimator.instances().size(), 1u) << "the moved mug became a second instance";
+  EXPECT_EQ(estimator.instances().front().id, id);
+  const auto position = estimator.instances().front().estimator->positionEstimate();
+  ASSERT_TRUE(position.has_value());
+  EXPECT_LT((*position - nearer.translation()).norm(), 0.02);
+  for (const CandidateOutcome& candidate : update.candidates) EXPECT_FALSE(candidate.new_instance);
+}
+
 TEST(InstancePresence, SeeingTheMugAtItsPlaceRestartsTheCount) {
   SceneEstimator estimator = makeEstimator();
   const int id = mugFoundAtA(estimator).id;

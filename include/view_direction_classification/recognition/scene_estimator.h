@@ -15,6 +15,7 @@
 #include "view_direction_classification/estimation/orientation_estimator.h"
 #include "view_direction_classification/recognition/candidate_identification.h"
 #include "view_direction_classification/recognition/instance_explanation.h"
+#include "view_direction_classification/recognition/instance_overlap.h"
 #include "view_direction_classification/recognition/instance_presence.h"
 #include "view_direction_classification/recognition/model_library.h"
 #include "view_direction_classification/recognition/scene_memory.h"
@@ -209,6 +210,9 @@ class SceneEstimator {
   int identify(const FrameCandidate& candidate, const SceneDepth& scene,
                const Eigen::Isometry3d& world_from_camera, std::optional<double> time,
                CandidateOutcome* outcome, bool remember_unknown = true);
+  // The index of the instance of its model the identified object is because the two would
+  // share their volume (InstanceOverlap), or -1; the outcome says it moved.
+  int sameObject(const Identification& identification, CandidateOutcome* outcome) const;
   // The instance a candidate identified as `model` is (its index): a known one of the model that
   // is out of place (InstancePresence::movedInstance: it moved here), else a new one.
   int instanceFor(int model, CandidateOutcome* outcome);
@@ -218,6 +222,7 @@ class SceneEstimator {
   std::vector<std::unique_ptr<InstanceExplanation>> explanations_;  // per library model
   std::unique_ptr<ShapeAlternative> shapes_;
   std::unique_ptr<InstancePresence> presence_;
+  std::unique_ptr<InstanceOverlap> overlap_;
   std::vector<ObjectInstance> instances_;
   UnknownObjects unknowns_;
   std::vector<int> instances_named_;  // per model: instances named so far
