@@ -35,6 +35,11 @@ struct PresenceCheck {
   int noData() const { return predicted - seen - free - hidden; }
 };
 
+// What the check's counts say: no evidence when under half the samples were judged (seen or
+// free); absence when at least 60 % of the judged were free, the surface seen when at most 25 %
+// were; in between nothing (a place half free is not seen occupied).
+PresenceEvidence presenceEvidence(const PresenceCheck& check);
+
 enum class InstanceState {
   kPresent,
   kGone,  // its place was seen free in absent_views frames: taken away, or moved unseen
