@@ -364,6 +364,14 @@ void addEvaluateOptions(CLI::App& command, EvaluateOptions& options) {
       "every product exact)")
       ->capture_default_str()
       ->check(zeroOrAtLeastOne());
+  addSetting(
+      command, options, "--camera-pose-uncertainty",
+      [](auto& s) -> auto& { return s.estimator.refined_fusion.camera_pose_uncertainty_deg; },
+      "/estimator/camera_pose_uncertainty_deg",
+      "[deg] RMS rotation error of the camera pose each view's evidence allows for (0: exact "
+      "poses)")
+      ->capture_default_str()
+      ->check(nonNegativeFinite());
   // Frame selection (estimation/frame_selection.h), in radians as config/estimator.yaml.
   addSetting(
       command, options, "--min-view-separation",
