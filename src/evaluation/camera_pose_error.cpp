@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <random>
+#include <sstream>
 #include <string>
 
 #include "view_direction_classification/common/error.h"
@@ -9,16 +10,29 @@
 namespace vdc {
 namespace {
 
+// A number as a message shows it: short, whatever its size (std::to_string writes 1e300 in
+// full).
+std::string shown(double value) {
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
+
 // Tags that keep these generators independent of the evaluation's others for the same seed.
 constexpr std::uint32_t kBiasStream = 0xb1a5u;
 constexpr std::uint32_t kPoseNoiseStream = 0x905eu;
 constexpr double kDegToRad = M_PI / 180.0;
 constexpr double kMmToM = 1e-3;
 
-void checkPart(double value, const std::string& name) {
-  if (!std::isfinite(value) || value < 0.0) {
-    throw Error("the camera pose error's " + name + " must be a finite number >= 0, got " +
-                std::to_string(value));
+// A robot's pose error, not a teleport: up to half a turn and a metre (beyond, the believed
+// camera would not even look at the object).
+constexpr double kMaxAngleDeg = 180.0;
+constexpr double kMaxShiftMm = 1000.0;
+
+void checkPart(double value, double largest, const std::string& name) {
+  if (!std::isfinite(value) || value < 0.0 || value > largest) {
+    throw Error("the camera pose error's " + name + " must be a number in [0, " +
+                std::to_string(static_cast<int>(largest)) + "], got " + shown(value));
   }
 }
 
@@ -55,10 +69,10 @@ Eigen::Isometry3d poseOf(const Eigen::Vector3d& rotation_vector, const Eigen::Ve
 }  // namespace
 
 void checkCameraPoseError(const CameraPoseError& error) {
-  checkPart(error.noise_deg, "noise angle [deg]");
-  checkPart(error.noise_mm, "noise shift [mm]");
-  checkPart(error.bias_deg, "hand-eye bias angle [deg]");
-  checkPart(error.bias_mm, "hand-eye bias shift [mm]");
+  checkPart(error.noise_deg, kMaxAngleDeg, "noise angle [deg]");
+  checkPart(error.noise_mm, kMaxShiftMm, "noise shift [mm]");
+  checkPart(error.bias_deg, kMaxAngleDeg, "hand-eye bias angle [deg]");
+  checkPart(error.bias_mm, kMaxShiftMm, "hand-eye bias shift [mm]");
 }
 
 Eigen::Isometry3d handEyeBias(const CameraPoseError& error, std::uint32_t seed, int sequence) {

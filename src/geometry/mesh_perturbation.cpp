@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -13,9 +14,22 @@
 namespace vdc {
 namespace {
 
+// A number as a message shows it: short, whatever its size (std::to_string writes 1e300 in
+// full).
+std::string shown(double value) {
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
+
 // The dent radius when none is given, as a fraction of the bounding-box diagonal: a dent of a
 // thumb's size on a mug.
 constexpr double kDefaultDentRadiusFraction = 0.1;
+
+// A perturbed object, not another one: scales beyond these would make float vertices degenerate
+// or overflow.
+constexpr double kSmallestScale = 0.1;
+constexpr double kLargestScale = 10.0;
 
 struct Dent {
   Eigen::Vector3d centre;
@@ -107,21 +121,21 @@ bool MeshPerturbation::any() const {
 
 void checkMeshPerturbation(const MeshPerturbation& p) {
   for (int k = 0; k < 3; ++k) {
-    if (!std::isfinite(p.scale(k)) || !(p.scale(k) > 0.0)) {
-      throw Error("the mesh scale must be positive and finite on every axis, got " +
-                  std::to_string(p.scale(k)) + " on axis " + std::to_string(k));
+    if (!(p.scale(k) >= kSmallestScale && p.scale(k) <= kLargestScale)) {  // also NaN
+      throw Error("the mesh scale must be in [0.1, 10] on every axis, got " + shown(p.scale(k)) +
+                  " on axis " + std::to_string(k));
     }
   }
   if (p.dents < 0) {
     throw Error("the number of mesh dents must not be negative, got " + std::to_string(p.dents));
   }
   if (!std::isfinite(p.dent_depth) || p.dent_depth < 0.0) {
-    throw Error("the mesh dents' depth must be a finite number >= 0, got " +
-                std::to_string(p.dent_depth) + " m");
+    throw Error("the mesh dents' depth must be a finite number >= 0, got " + shown(p.dent_depth) +
+                " m");
   }
   if (!std::isfinite(p.dent_radius) || p.dent_radius < 0.0) {
-    throw Error("the mesh dents' radius must be a finite number >= 0, got " +
-                std::to_string(p.dent_radius) + " m");
+    throw Error("the mesh dents' radius must be a finite number >= 0, got " + shown(p.dent_radius) +
+                " m");
   }
 }
 

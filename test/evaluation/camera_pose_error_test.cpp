@@ -110,6 +110,8 @@ TEST(CameraPoseErrorTest, NegativeOrNonFiniteValuesAreRefusedWithTheirName) {
   expectRefused({0.0, nan, 0.0, 0.0}, "noise shift");
   expectRefused({0.0, 0.0, inf, 0.0}, "bias angle");
   expectRefused({0.0, 0.0, 0.0, -0.1}, "bias shift");
+  expectRefused({0.0, 0.0, 1e300, 0.0}, "bias angle");
+  expectRefused({0.0, 2000.0, 0.0, 0.0}, "noise shift");
   EXPECT_NO_THROW(checkCameraPoseError({1.0, 5.0, 2.0, 5.0}));
 }
 

@@ -96,6 +96,8 @@ TEST(MeshPerturbationTest, BadValuesAreRefusedWithTheirName) {
   expectRefused(p, "scale");
   p.scale = Eigen::Vector3d(nan, 1.0, 1.0);
   expectRefused(p, "scale");
+  p.scale = Eigen::Vector3d(1.0, 1.0, 1e30);
+  expectRefused(p, "scale");
   expectRefused(dents(-1, 0.001), "number of mesh dents");
   expectRefused(dents(2, -0.001), "depth");
   expectRefused(dents(2, nan), "depth");

@@ -28,7 +28,8 @@ struct CameraPoseError {
   }
 };
 
-// Throws vdc::Error naming the first value that is negative or not finite.
+// Throws vdc::Error naming the first value that is negative, not finite, or beyond 180 degrees
+// or 1000 mm.
 void checkCameraPoseError(const CameraPoseError& error);
 
 // B of `sequence`: deterministic in (seed, sequence), the same for every view of the sequence.

@@ -28,8 +28,8 @@ struct MeshPerturbation {
   bool any() const;
 };
 
-// Throws vdc::Error naming the first bad value: a scale not positive and finite, a negative dent
-// count, a depth or radius negative or not finite.
+// Throws vdc::Error naming the first bad value: a scale outside [0.1, 10] (or NaN), a negative
+// dent count, a depth or radius negative or not finite.
 void checkMeshPerturbation(const MeshPerturbation& perturbation);
 
 // The perturbed copy of `mesh` (same triangles, moved vertices). Vertices at the same position
