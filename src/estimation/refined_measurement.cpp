@@ -18,10 +18,16 @@ namespace {
 // with V = [q (0, e_x), q (0, e_y), q (0, e_z)], V^T x = t / 2, so the exponent is -2 V L V^T.
 // About the sector axis a of a pose with a roll sector the information is replaced by
 // 1 / sigma^2 with sigma the sector (none for a whole turn).
-Eigen::Matrix4d poseExponent(const RefinedPose& pose, double concentration) {
+// The camera pose's error, independent of the fit's, adds its covariance (pose_variance per
+// axis [rad^2]) before the inversion.
+Eigen::Matrix4d poseExponent(const RefinedPose& pose, double concentration, double pose_variance) {
   const Eigen::Vector4d& q = pose.orientation;
   Eigen::Matrix3d information = 0.5 * concentration * Eigen::Matrix3d::Identity();
   if (pose.rotation_covariance.trace() > 0.0) information = pose.rotation_covariance.inverse();
+  if (pose_variance > 0.0) {
+    information =
+        (information.inverse() + pose_variance * Eigen::Matrix3d::Identity()).inverse().eval();
+  }
   if (pose.roll_sector_deg > 0.0) {
     const Eigen::Vector3d a = pose.sector_axis.normalized();
     const Eigen::Matrix3d across = Eigen::Matrix3d::Identity() - a * a.transpose();
@@ -51,14 +57,20 @@ BinghamMixture refinedMeasurement(const RefinementResult& result,
     throw Error("refinement's outlier weight must be in (0, 1), got " +
                 std::to_string(parameters.outlier_weight));
   }
+  if (!std::isfinite(parameters.camera_pose_uncertainty_deg) ||
+      parameters.camera_pose_uncertainty_deg < 0.0) {
+    throw Error("the camera pose uncertainty must be a finite number >= 0, got " +
+                std::to_string(parameters.camera_pose_uncertainty_deg) + " deg");
+  }
   if (result.kept.empty()) throw Error("no verified poses to fuse");
+  const double per_axis = parameters.camera_pose_uncertainty_deg * M_PI / 180.0 / std::sqrt(3.0);
   std::vector<double> log_weights;
   std::vector<BinghamDistribution> components;
   double total = 0.0;
   const double best = result.kept.front().score.score();
   for (const RefinedPose& pose : result.kept) {
-    components.push_back(
-        BinghamDistribution::fromExponentMatrix(poseExponent(pose, parameters.concentration)));
+    components.push_back(BinghamDistribution::fromExponentMatrix(
+        poseExponent(pose, parameters.concentration, per_axis * per_axis)));
     log_weights.push_back(parameters.likelihood_scale * (pose.score.score() - best));
     total += std::exp(log_weights.back());
   }

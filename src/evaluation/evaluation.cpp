@@ -126,6 +126,15 @@ void checkEvaluationSettings(const EvaluationSettings& s) {
     throw Error("the stream's dwell time must be >= 0 and finite, got " +
                 std::to_string(s.stream_dwell_s) + " s");
   }
+  checkCameraPoseError(s.camera_pose_error);
+  checkMeshPerturbation(s.mesh_perturbation);
+}
+
+TriangleMesh renderedObjectMesh(const TriangleMesh& mesh, const EvaluationSettings& settings) {
+  MeshPerturbation perturbation = settings.mesh_perturbation;
+  if (!perturbation.any()) return mesh;
+  perturbation.seed = settings.seed;
+  return perturbMesh(mesh, perturbation);
 }
 
 std::vector<double> visibilityRadii(const EvaluationSettings& settings) {
@@ -263,7 +272,7 @@ EvaluationResult evaluateEstimator(std::shared_ptr<const ModelBundle> model,
   if (!model) throw Error("the evaluation needs a model bundle");
   // Fails early (not inside the threads) for bad estimator parameters.
   { const OrientationEstimator check(model, settings.estimator); }
-  const DepthRenderer renderer(mesh, intrinsicsOf(model->parameters));
+  const DepthRenderer renderer(renderedObjectMesh(mesh, settings), intrinsicsOf(model->parameters));
   std::unique_ptr<ViewUtilityScorer> scorer;
   if (planner != EvaluationPlanner::kRandom) {
     scorer = std::make_unique<ViewUtilityScorer>(model);
@@ -304,8 +313,11 @@ EvaluationResult evaluateEstimator(std::shared_ptr<const ModelBundle> model,
             sequence.camera_from_object[static_cast<std::size_t>(candidate)];
         const auto cloud = renderEvaluationView(renderer, settings, sequence_index, candidate,
                                                 camera_from_object, anchors, radius);
-        const ViewUpdate update =
-            estimator.update(cloud, world_from_object * camera_from_object.inverse());
+        // Rendered from the true pose; the estimator gets the pose the robot believes.
+        const ViewUpdate update = estimator.update(
+            cloud, believedWorldFromCamera(world_from_object * camera_from_object.inverse(),
+                                           settings.camera_pose_error, settings.seed,
+                                           sequence_index, candidate));
         out.stage_ms += update.timing;
         if (!update.updated) ++out.skipped;
         const auto map_start = std::chrono::steady_clock::now();
@@ -373,7 +385,9 @@ EvaluationResult evaluateSingleView(const SingleViewMethod& method, const std::s
   checkEvaluationSettings(settings);
   checkVisibilityAnchors(anchors, settings);
   if (!method) throw Error("the single-view evaluation needs a method");
-  const DepthRenderer renderer(mesh, intrinsics);
+  // A single-view method estimates T_CO in the camera frame: the camera pose error does not
+  // reach it, the perturbed mesh does.
+  const DepthRenderer renderer(renderedObjectMesh(mesh, settings), intrinsics);
   const std::vector<double> radii = visibilityRadii(settings);
   const std::vector<double> fractions = visibleFractions(mesh, anchors, settings);
   const std::size_t total_views = radii.size() * settings.sequences * settings.views;

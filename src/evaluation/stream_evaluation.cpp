@@ -114,8 +114,14 @@ StreamSequenceResult runStream(const std::shared_ptr<const ModelBundle>& model,
       cloud = cropToAnchors(cloud, frame.camera_from_object, anchors, radius);
     }
     costs->render += millisecondsSince(render_start);
+    // Rendered from the true pose; the estimator gets the pose the robot believes, with the
+    // noise of the view the frame belongs to (the robot's error changes as it moves on).
     const ViewUpdate update =
-        estimator.update(cloud, world_from_object * frame.camera_from_object.inverse(), frame.time);
+        estimator.update(cloud,
+                         believedWorldFromCamera(
+                             world_from_object * frame.camera_from_object.inverse(),
+                             settings.camera_pose_error, settings.seed, sequence_index, frame.view),
+                         frame.time);
     countFrame(update, &out, costs);
     if (update.updated) {
       out.fusions.push_back(sampleOf(estimator, sequence.world_from_object, frame));
@@ -186,7 +192,7 @@ StreamEvaluationResult evaluateStream(std::shared_ptr<const ModelBundle> model,
   }
   if (!model) throw Error("the stream evaluation needs a model bundle");
   { const OrientationEstimator check(model, settings.estimator); }  // bad parameters fail here
-  const DepthRenderer renderer(mesh, intrinsicsOf(model->parameters));
+  const DepthRenderer renderer(renderedObjectMesh(mesh, settings), intrinsicsOf(model->parameters));
   const std::vector<double> radii = visibilityRadii(settings);
   const int settings_count = static_cast<int>(radii.size());
   std::vector<std::vector<StreamFrame>> paths;

@@ -80,6 +80,10 @@ ParameterTable<EstimatorRosParameters> makeTable() {
            fieldPath(&P::core, &E::refinement_parameters, &R::verification,
                      &VerificationParameters::depth_noise_at_1m),
            numberAtLeast(0.0, "0: the fixed tolerances alone"))
+      .add("camera_pose_uncertainty_deg",
+           fieldPath(&P::core, &E::refined_fusion,
+                     &RefinedFusionParameters::camera_pose_uncertainty_deg),
+           numberAtLeast(0.0, "0: exact camera poses"))
       .add("refinement_search_below_score",
            fieldPath(&P::core, &E::belief_check, &BeliefCheckParameters::search_below_score),
            numberIn(0.0, 1.0, true))

@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "evaluation_labels.h"
@@ -123,7 +124,141 @@ CLI::Validator finiteNumber() {
       "");
 }
 
+// Exactly `count` comma-separated finite numbers >= 0 (empty items count: "1,,2" is three).
+std::vector<double> parseNonNegativeNumbers(const std::string& text, std::size_t count,
+                                            const std::string& flag, const std::string& form) {
+  std::vector<std::string> items;
+  std::stringstream stream(text);
+  for (std::string item; std::getline(stream, item, ',');) items.push_back(item);
+  if (!text.empty() && text.back() == ',') items.emplace_back();
+  if (items.size() != count) {
+    throw Error(flag + ": expected " + form + " (" + std::to_string(count) +
+                " comma-separated numbers), got '" + text + "'");
+  }
+  std::vector<double> values;
+  for (const std::string& item : items) {
+    char* end = nullptr;
+    const double value = std::strtod(item.c_str(), &end);
+    if (item.empty() || end != item.c_str() + item.size() || !std::isfinite(value) || value < 0.0) {
+      throw Error(flag + ": '" + item + "' in '" + text +
+                  "' is not a finite number >= 0 (expected " + form + ")");
+    }
+    values.push_back(value);
+  }
+  return values;
+}
+
+// A CLI validator that runs `parse` on a scratch value, so a bad value is a usage error (exit
+// code 2) reported before any work, with the parser's message.
+template <typename Value, typename Parse>
+CLI::Validator parsedBy(Parse parse) {
+  return CLI::Validator(
+      [parse](const std::string& text) -> std::string {
+        Value scratch;
+        try {
+          parse(text, scratch);
+        } catch (const Error& error) {
+          // CLI names the option itself: drop the message's own "--flag: ".
+          const std::string message = error.what();
+          const std::size_t colon = message.find(": ");
+          return message.rfind("--", 0) == 0 && colon != std::string::npos
+                     ? message.substr(colon + 2)
+                     : message;
+        }
+        return "";
+      },
+      "");
+}
+
+// Declares a "A,B[,C]" option that `parse` reads into the settings' `part`, recorded as `record`
+// under `summary_key`.
+template <typename Part, typename Parse, typename Record>
+void addPartOption(CLI::App& command, EvaluateOptions& options, const std::string& flag, Part part,
+                   Parse parse, Record record, const std::string& summary_key,
+                   const std::string& help) {
+  using Value = std::decay_t<decltype(part(options.settings))>;
+  command
+      .add_option_function<std::string>(
+          flag,
+          [&options, part, parse](const std::string& text) { parse(text, part(options.settings)); },
+          help)
+      ->check(parsedBy<Value>(parse));
+  options.recorded.push_back(
+      {nlohmann::json::json_pointer(summary_key),
+       [part, record](const EvaluationSettings& s) { return record(part(s)); }});
+}
+
+// The robot-realism options: the camera pose the estimator believes, the object it sees.
+void addRealismOptions(CLI::App& command, EvaluateOptions& options) {
+  const auto pose_error = [](auto& s) -> auto& { return s.camera_pose_error; };
+  addPartOption(
+      command, options, "--camera-pose-noise", pose_error, parseCameraPoseNoise,
+      [](const CameraPoseError& e) {
+        return nlohmann::json{{"deg", e.noise_deg}, {"mm", e.noise_mm}};
+      },
+      "/camera_pose_noise",
+      "DEG,MM: the camera pose the estimator is given is off by a random rotation and shift per "
+      "view, RMS DEG degrees and MM mm (per-axis Gaussians, camera frame); default 0,0");
+  addPartOption(
+      command, options, "--hand-eye-bias", pose_error, parseHandEyeBias,
+      [](const CameraPoseError& e) {
+        return nlohmann::json{{"deg", e.bias_deg}, {"mm", e.bias_mm}};
+      },
+      "/hand_eye_bias",
+      "DEG,MM: and by a constant rotation of DEG degrees and shift of MM mm per sequence "
+      "(directions drawn per sequence, camera frame); default 0,0");
+  const auto perturbation = [](auto& s) -> auto& { return s.mesh_perturbation; };
+  addPartOption(
+      command, options, "--mesh-scale", perturbation, parseMeshScale,
+      [](const MeshPerturbation& p) {
+        return nlohmann::json::array({p.scale.x(), p.scale.y(), p.scale.z()});
+      },
+      "/mesh_scale",
+      "SX,SY,SZ: render the views from the mesh scaled per axis (object frame), while the model "
+      "stays the clean mesh's; default 1,1,1");
+  addPartOption(
+      command, options, "--mesh-dents", perturbation, parseMeshDents,
+      [](const MeshPerturbation& p) {
+        return nlohmann::json{{"dents", p.dents}, {"depth_mm", 1000.0 * p.dent_depth}};
+      },
+      "/mesh_dents",
+      "N,DEPTH_MM: and with N smooth dents of DEPTH_MM mm pushed inward (radius a tenth of the "
+      "mesh's diagonal, placed from the seed); default 0,0");
+}
+
 }  // namespace
+
+void parseCameraPoseNoise(const std::string& text, CameraPoseError& error) {
+  const auto values = parseNonNegativeNumbers(text, 2, "--camera-pose-noise", "DEG,MM");
+  error.noise_deg = values[0];
+  error.noise_mm = values[1];
+}
+
+void parseHandEyeBias(const std::string& text, CameraPoseError& error) {
+  const auto values = parseNonNegativeNumbers(text, 2, "--hand-eye-bias", "DEG,MM");
+  error.bias_deg = values[0];
+  error.bias_mm = values[1];
+}
+
+void parseMeshScale(const std::string& text, MeshPerturbation& perturbation) {
+  const auto values = parseNonNegativeNumbers(text, 3, "--mesh-scale", "SX,SY,SZ");
+  for (std::size_t k = 0; k < 3; ++k) {
+    if (!(values[k] > 0.0)) {
+      throw Error("--mesh-scale: every scale must be above 0, got '" + text + "'");
+    }
+  }
+  perturbation.scale = Eigen::Vector3d(values[0], values[1], values[2]);
+}
+
+void parseMeshDents(const std::string& text, MeshPerturbation& perturbation) {
+  const auto values = parseNonNegativeNumbers(text, 2, "--mesh-dents", "N,DEPTH_MM");
+  if (values[0] != std::floor(values[0]) || values[0] > 10000.0) {
+    throw Error("--mesh-dents: the number of dents must be a whole number up to 10000, got '" +
+                text + "'");
+  }
+  perturbation.dents = static_cast<int>(values[0]);
+  perturbation.dent_depth = values[1] / 1000.0;
+}
 
 void addEvaluateOptions(CLI::App& command, EvaluateOptions& options) {
   options.visibility = kDefaultVisibility;
@@ -229,6 +364,14 @@ void addEvaluateOptions(CLI::App& command, EvaluateOptions& options) {
       "every product exact)")
       ->capture_default_str()
       ->check(zeroOrAtLeastOne());
+  addSetting(
+      command, options, "--camera-pose-uncertainty",
+      [](auto& s) -> auto& { return s.estimator.refined_fusion.camera_pose_uncertainty_deg; },
+      "/estimator/camera_pose_uncertainty_deg",
+      "[deg] RMS rotation error of the camera pose each view's evidence allows for (0: exact "
+      "poses)")
+      ->capture_default_str()
+      ->check(nonNegativeFinite());
   // Frame selection (estimation/frame_selection.h), in radians as config/estimator.yaml.
   addSetting(
       command, options, "--min-view-separation",
@@ -273,6 +416,7 @@ void addEvaluateOptions(CLI::App& command, EvaluateOptions& options) {
   options.recorded.push_back(
       {nlohmann::json::json_pointer("/estimator/refinement"),
        [](const EvaluationSettings& s) { return refinementModeName(s.estimator.refinement); }});
+  addRealismOptions(command, options);
   command.add_flag(
       "--baseline", options.baseline,
       "also run the single-view baselines on the random planner's views: PCL's PPF, and "

@@ -40,6 +40,15 @@ struct EvaluateOptions {
 // field in EvaluationSettings).
 void addEvaluateOptions(CLI::App& command, EvaluateOptions& options);
 
+// The values of the robot-realism options, each throwing vdc::Error that names the option for a
+// wrong count, a value that is not a number, negative or not finite:
+// --camera-pose-noise and --hand-eye-bias "DEG,MM" into `error` (noise or bias part).
+void parseCameraPoseNoise(const std::string& text, CameraPoseError& error);
+void parseHandEyeBias(const std::string& text, CameraPoseError& error);
+// --mesh-scale "SX,SY,SZ" (each > 0) and --mesh-dents "N,DEPTH_MM" (N an integer >= 0).
+void parseMeshScale(const std::string& text, MeshPerturbation& perturbation);
+void parseMeshDents(const std::string& text, MeshPerturbation& perturbation);
+
 // What the options ask for, parsed.
 struct EvaluationRequest {
   EvaluationSettings settings;  // with the visibility radii; distance and noise: resolveSettings

@@ -22,10 +22,11 @@ RefinedPose keptPose(double roll_sector_deg) {
 
 // The measurement's log density at the pose turned by angle_deg about the object's `axis`,
 // relative to its density at the pose.
-double relativeLogDensity(const RefinedPose& pose, const Eigen::Vector3d& axis, double angle_deg) {
+double relativeLogDensity(const RefinedPose& pose, const Eigen::Vector3d& axis, double angle_deg,
+                          const RefinedFusionParameters& parameters = {}) {
   RefinementResult result;
   result.kept = {pose};
-  const BinghamMixture measurement = refinedMeasurement(result, RefinedFusionParameters{});
+  const BinghamMixture measurement = refinedMeasurement(result, parameters);
   const Eigen::Vector4d turned =
       quaternionMultiply(pose.orientation, quaternionFromAxisAngle(axis, angle_deg * M_PI / 180));
   return measurement.logDensity(turned) - measurement.logDensity(pose.orientation);
@@ -73,6 +74,25 @@ TEST(RefinedMeasurement, TheFitsRotationCovarianceShapesTheComponent) {
   EXPECT_NEAR(relativeLogDensity(pose, Eigen::Vector3d::UnitZ(), 2.0), -0.125, 0.01);
 }
 
+TEST(RefinedMeasurement, TheCameraPoseUncertaintyAddsItsVarianceToTheFitsAboutEveryAxis) {
+  // The fit's sigma 1 degree per axis; a camera pose uncertainty of 3 degrees RMS is sqrt(3) per
+  // axis: sigma^2 = 1 + 3 = 4, a 2-degree turn costs (2 / 2)^2 / 2 = 0.5 nats instead of 2.
+  RefinedPose pose = keptPose(0.0);
+  const double degree = M_PI / 180.0;
+  pose.rotation_covariance = Eigen::Matrix3d::Identity() * degree * degree;
+  RefinedFusionParameters parameters;
+  parameters.camera_pose_uncertainty_deg = 3.0;
+  for (const Eigen::Vector3d axis :
+       {Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitZ()}) {
+    EXPECT_NEAR(relativeLogDensity(pose, axis, 2.0), -2.0, 0.02) << axis.transpose();
+    EXPECT_NEAR(relativeLogDensity(pose, axis, 2.0, parameters), -0.5, 0.01) << axis.transpose();
+  }
+  // 0 leaves the component exactly as the fit gives it.
+  parameters.camera_pose_uncertainty_deg = 0.0;
+  EXPECT_EQ(relativeLogDensity(pose, Eigen::Vector3d::UnitX(), 2.0, parameters),
+            relativeLogDensity(pose, Eigen::Vector3d::UnitX(), 2.0));
+}
+
 TEST(RefinedMeasurement, RefusesNoPosesAndInvalidParameters) {
   EXPECT_THROW(refinedMeasurement(RefinementResult{}, RefinedFusionParameters{}), Error);
   RefinementResult result;
@@ -82,6 +102,11 @@ TEST(RefinedMeasurement, RefusesNoPosesAndInvalidParameters) {
   EXPECT_THROW(refinedMeasurement(result, bad), Error);
   bad = RefinedFusionParameters{};
   bad.outlier_weight = 1.0;
+  EXPECT_THROW(refinedMeasurement(result, bad), Error);
+  bad = RefinedFusionParameters{};
+  bad.camera_pose_uncertainty_deg = -1.0;
+  EXPECT_THROW(refinedMeasurement(result, bad), Error);
+  bad.camera_pose_uncertainty_deg = std::nan("");
   EXPECT_THROW(refinedMeasurement(result, bad), Error);
 }
 

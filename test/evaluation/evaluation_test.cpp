@@ -9,6 +9,7 @@
 
 #include "support/quick_mug_model.h"
 #include "view_direction_classification/common/error.h"
+#include "view_direction_classification/common/rotation_error.h"
 #include "view_direction_classification/geometry/mug_mesh.h"
 
 namespace vdc {
@@ -194,6 +195,64 @@ TEST(EvaluationTest, ViewsUntilTheMedianStaysBelowAThresholdIgnoreDipsThatComeBa
   EXPECT_EQ(viewsUntilMedianStaysBelow(Eigen::VectorXd(), 5.0), std::nullopt);
 }
 
+// The errors of a fresh estimator given the true camera pose of each of the random planner's
+// views of `sequence`: what the evaluation did before it had camera pose errors.
+Eigen::VectorXd errorsOnTheTruePoses(const EvaluationSettings& settings, int sequence) {
+  const auto model = test::quickMugModel();
+  const DepthRenderer renderer(makeMug(), intrinsicsOf(model->parameters));
+  const EvaluationSequence views = makeEvaluationSequence(settings, sequence);
+  OrientationEstimator estimator(model, settings.estimator);
+  Eigen::VectorXd errors(settings.views);
+  for (int v = 0; v < settings.views; ++v) {
+    const Eigen::Isometry3d& camera_from_object = views.camera_from_object[v];
+    const auto cloud =
+        renderEvaluationView(renderer, settings, sequence, v, camera_from_object, {}, kAllVisible);
+    estimator.update(cloud, views.worldFromObject() * camera_from_object.inverse());
+    errors(v) = rotationErrorDeg(estimator.mapOrientation(), views.world_from_object);
+  }
+  return errors;
+}
+
+TEST(EvaluationTest, WithoutPoseErrorTheEstimatorGetsTheTruePosesExactlyAndWithItNot) {
+  EvaluationSettings settings = smallSettings();
+  settings.sequences = 1;
+  settings.threads = 1;
+  settings.visibility_radii = {kAllVisible};
+  const Eigen::VectorXd truth = errorsOnTheTruePoses(settings, 0);
+  const EvaluationResult exact = evaluateEstimator(
+      test::quickMugModel(), makeMug(), mugHandleAnchors(), EvaluationPlanner::kRandom, settings);
+  EXPECT_EQ(Eigen::VectorXd(exact.settings[0].errors_deg.row(0).transpose()), truth);
+  // A 5-degree hand-eye bias turns every view's evidence: the errors change (measured against
+  // the same truth).
+  settings.camera_pose_error.bias_deg = 5.0;
+  const EvaluationResult biased = evaluateEstimator(
+      test::quickMugModel(), makeMug(), mugHandleAnchors(), EvaluationPlanner::kRandom, settings);
+  EXPECT_NE(Eigen::VectorXd(biased.settings[0].errors_deg.row(0).transpose()), truth);
+}
+
+TEST(EvaluationTest, TheViewsAreRenderedFromThePerturbedMeshWithTheEvaluationSeed) {
+  EvaluationSettings settings = smallSettings();
+  const TriangleMesh mug = makeMug();
+  const TriangleMesh same = renderedObjectMesh(mug, settings);
+  ASSERT_EQ(same.vertices.size(), mug.vertices.size());
+  for (std::size_t v = 0; v < mug.vertices.size(); ++v)
+    EXPECT_EQ(same.vertices[v], mug.vertices[v]);
+  settings.mesh_perturbation.scale = Eigen::Vector3d(1.0, 1.0, 1.03);
+  EXPECT_NEAR(renderedObjectMesh(mug, settings).bounds().max().z(), 1.03 * mug.bounds().max().z(),
+              1e-6);
+  settings.mesh_perturbation.scale = Eigen::Vector3d::Ones();
+  settings.mesh_perturbation.dents = 3;
+  settings.mesh_perturbation.dent_depth = 0.002;
+  const TriangleMesh seeded = renderedObjectMesh(mug, settings);
+  settings.seed += 1;
+  const TriangleMesh reseeded = renderedObjectMesh(mug, settings);
+  bool differ = false;
+  for (std::size_t v = 0; v < mug.vertices.size(); ++v) {
+    differ = differ || seeded.vertices[v] != reseeded.vertices[v];
+  }
+  EXPECT_TRUE(differ);
+}
+
 TEST(EvaluationTest, BadSettingsAndMissingAnchorsAreRefused) {
   EvaluationSettings settings = smallSettings();
   settings.sequences = 0;
@@ -206,6 +265,12 @@ TEST(EvaluationTest, BadSettingsAndMissingAnchorsAreRefused) {
   EXPECT_THROW(checkEvaluationSettings(settings), Error);
   settings = smallSettings();
   settings.distance = 0.0;
+  EXPECT_THROW(checkEvaluationSettings(settings), Error);
+  settings = smallSettings();
+  settings.camera_pose_error.noise_mm = -1.0;
+  EXPECT_THROW(checkEvaluationSettings(settings), Error);
+  settings = smallSettings();
+  settings.mesh_perturbation.scale.y() = 0.0;
   EXPECT_THROW(checkEvaluationSettings(settings), Error);
   // Occlusion settings need anchors; the unoccluded one does not.
   EXPECT_THROW(evaluateEstimator(test::quickMugModel(), makeMug(), {}, EvaluationPlanner::kRandom,

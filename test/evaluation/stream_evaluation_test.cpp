@@ -127,6 +127,18 @@ TEST(StreamEvaluation, ACroppedStreamSeesOnlyTheHandleAndStillRuns) {
   EXPECT_EQ(result.settings[0].sequences[0].view_ends.size(), 2u);
 }
 
+TEST(StreamEvaluation, TheCameraPoseErrorReachesTheStreamsEstimatorNotItsRenderer) {
+  EvaluationSettings settings = smallStream();
+  const StreamSequenceResult exact = runSmallStream(settings).settings[0].sequences[0];
+  settings.camera_pose_error.bias_deg = 5.0;
+  const StreamSequenceResult biased = runSmallStream(settings).settings[0].sequences[0];
+  // The same frames (rendered from the true poses), other errors (measured against the truth).
+  EXPECT_EQ(biased.frames, exact.frames);
+  ASSERT_FALSE(biased.view_ends.empty());
+  ASSERT_EQ(biased.view_ends.size(), exact.view_ends.size());
+  EXPECT_NE(biased.view_ends.back().map_error_deg, exact.view_ends.back().map_error_deg);
+}
+
 TEST(StreamEvaluation, BadStreamSettingsAreRefused) {
   EvaluationSettings settings = smallStream();
   settings.stream_rate_hz = 0.0;

@@ -86,6 +86,19 @@ TEST_F(VdcCliTest, BadStreamOptionsAreUsageErrorsNamingTheOption) {
   }
 }
 
+TEST_F(VdcCliTest, BadPoseErrorAndMeshOptionsAreUsageErrorsNamingTheOptionOnce) {
+  for (const char* bad : {"--camera-pose-noise 1", "--hand-eye-bias -2,5", "--mesh-scale 1,nan,1",
+                          "--mesh-dents 2.5,1", "--camera-pose-uncertainty -1"}) {
+    const ToolRun run =
+        runVdc(std::string("evaluate --model m.h5 --mesh m.ply --out e --no-figure ") + bad);
+    EXPECT_EQ(run.exit_code, 2) << bad << ": " << run.output;
+    const std::string option = std::string(bad).substr(0, std::string(bad).find(' '));
+    EXPECT_EQ(run.output.rfind(option + ": ", 0), 0u) << run.output;
+    // CLI names the option; the parser's message does not repeat it.
+    EXPECT_EQ(run.output.find(option, option.size()), std::string::npos) << run.output;
+  }
+}
+
 TEST_F(VdcCliTest, MissingCorruptAndForeignModelFilesFailWithOneLine) {
   const ToolRun missing = runVdc("inspect " + path("absent.h5"));
   expectOneFailureLine(missing);

@@ -16,6 +16,12 @@ struct RefinedFusionParameters {
   // Weight of the uniform "none of them" component, so that the belief's other hypotheses
   // survive when every verified pose is wrong.
   double outlier_weight = 0.05;
+  // The camera pose's rotation error [deg, RMS angle] that a view's evidence allows for: a pose
+  // fitted in a camera frame whose pose is that far off is that far off in the fixed frame,
+  // however good the fit. Each verified pose's rotation covariance grows by
+  // (camera_pose_uncertainty_deg / sqrt(3))^2 per axis (camera_pose_error.h's noise model).
+  // 0: the poses are exact (a simulator's, or a well-calibrated robot's).
+  double camera_pose_uncertainty_deg = 0.0;
 };
 
 // The verified poses (result.kept, q_WO) as one measurement over q_WO: one concentrated Bingham
@@ -23,7 +29,8 @@ struct RefinedFusionParameters {
 // sector (pose_refiner.h), weighted by its
 // verification likelihood, plus the uniform outlier component; multiplying the belief by it keeps
 // the belief one Bingham mixture. Throws vdc::Error for no kept poses or invalid parameters
-// (concentration or scale <= 0, outlier weight outside (0, 1)).
+// (concentration or scale <= 0, outlier weight outside (0, 1), a camera pose uncertainty
+// negative or not finite).
 BinghamMixture refinedMeasurement(const RefinementResult& result,
                                   const RefinedFusionParameters& parameters);
 

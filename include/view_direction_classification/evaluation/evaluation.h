@@ -15,8 +15,10 @@
 
 #include "view_direction_classification/common/progress.h"
 #include "view_direction_classification/estimation/orientation_estimator.h"
+#include "view_direction_classification/evaluation/camera_pose_error.h"
 #include "view_direction_classification/geometry/camera.h"
 #include "view_direction_classification/geometry/depth_renderer.h"
+#include "view_direction_classification/geometry/mesh_perturbation.h"
 #include "view_direction_classification/geometry/triangle_mesh.h"
 #include "view_direction_classification/training/model_bundle.h"
 
@@ -47,10 +49,22 @@ struct EvaluationSettings {
   // stream; 0: no stream, one cloud per view only.
   double stream_rate_hz = 0.0;
   double stream_dwell_s = 2.0;  // [s] the stream's camera stays this long at each view
+  // The camera pose the estimator is given (camera_pose_error.h): the true one by default. The
+  // views are always rendered from the true pose, and the errors measured against the truth.
+  // The noise of a view is drawn per (seed, sequence, candidate view).
+  CameraPoseError camera_pose_error;
+  // The object the views are rendered from (mesh_perturbation.h), while the model comes from the
+  // clean mesh: the given mesh by default. Its seed is replaced by `seed`: one perturbed object
+  // per run, the same in every sequence.
+  MeshPerturbation mesh_perturbation;
 };
 
 // Throws vdc::Error naming the first bad setting.
 void checkEvaluationSettings(const EvaluationSettings& settings);
+
+// The mesh the views are rendered from: `mesh` perturbed by settings.mesh_perturbation (with
+// settings.seed), or `mesh` itself when the perturbation is the identity.
+TriangleMesh renderedObjectMesh(const TriangleMesh& mesh, const EvaluationSettings& settings);
 
 // The radii of the visibility settings: settings.visibility_radii, {kAllVisible} when empty.
 std::vector<double> visibilityRadii(const EvaluationSettings& settings);
