@@ -9,8 +9,9 @@
 #include <fstream>
 #include <string>
 
+#include "support/error_of.h"
+#include "support/temporary_directory_test.h"
 #include "view_direction_classification/bop/bop_units.h"
-#include "view_direction_classification/common/error.h"
 #include "view_direction_classification/geometry/depth_renderer.h"
 #include "view_direction_classification/geometry/primitive_meshes.h"
 
@@ -19,11 +20,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path freshDirectory(const std::string& name) {
-  const fs::path directory = fs::temp_directory_path() / ("vdc_bop_dataset_test_" + name);
-  fs::remove_all(directory);
-  return directory;
-}
+using BopDatasetTest = test::TemporaryDirectoryTest;
 
 // A rendered two-image scene of one box, the camera turning about the box between the images.
 struct RenderedScene {
@@ -64,8 +61,8 @@ void writeDataset(const fs::path& root, const RenderedScene& scene) {
   writeBopScene(root.string(), "test", 3, scene.images);
 }
 
-TEST(BopDataset, RenderedSceneReadsBackExactly) {
-  const fs::path root = freshDirectory("round_trip");
+TEST_F(BopDatasetTest, RenderedSceneReadsBackExactly) {
+  const fs::path root = directory();
   const RenderedScene scene = renderScene();
   writeDataset(root, scene);
 
@@ -120,34 +117,23 @@ TEST(BopDataset, RenderedSceneReadsBackExactly) {
   }
 }
 
-// The message of the vdc::Error the call throws ("" if none).
-template <typename Call>
-std::string errorOf(const Call& call) {
-  try {
-    call();
-  } catch (const Error& error) {
-    return error.what();
-  }
-  return "";
-}
-
-TEST(BopDataset, DamagedFilesAreRefusedWithTheirName) {
-  const fs::path root = freshDirectory("damaged");
+TEST_F(BopDatasetTest, DamagedFilesAreRefusedWithTheirName) {
+  const fs::path root = directory();
   writeDataset(root, renderScene());
   const fs::path scene_gt = root / "test" / "000003" / "scene_gt.json";
   std::ofstream(scene_gt) << R"({"0": [{"obj_id": 7, "cam_R_m2c": [1, 0, 0, 0, 1, 0, 0, 0, 1]}]})";
   const BopDatasetReader reader(root.string(), "test");
-  const std::string gt_message = errorOf([&] { reader.scene(3); });
+  const std::string gt_message = test::errorOf([&] { reader.scene(3); });
   EXPECT_NE(gt_message.find(scene_gt.string()), std::string::npos) << gt_message;
   EXPECT_NE(gt_message.find("cam_t_m2c"), std::string::npos) << gt_message;
 
   const fs::path depth = root / "test" / "000003" / "depth" / "000005.png";
   writeBopDepthPng({3, 3, std::vector<std::uint16_t>(9, 1)}, depth.string());
-  const std::string depth_message = errorOf([&] { reader.depth(3, 5); });
+  const std::string depth_message = test::errorOf([&] { reader.depth(3, 5); });
   EXPECT_NE(depth_message.find(depth.string()), std::string::npos) << depth_message;
 
   fs::remove(root / "models" / "models_info.json");
-  const std::string info_message = errorOf([&] { BopDatasetReader(root.string(), "test"); });
+  const std::string info_message = test::errorOf([&] { BopDatasetReader(root.string(), "test"); });
   EXPECT_NE(info_message.find("models_info.json"), std::string::npos) << info_message;
 }
 

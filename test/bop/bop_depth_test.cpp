@@ -9,18 +9,15 @@
 #include <string>
 #include <vector>
 
-#include "view_direction_classification/common/error.h"
+#include "support/error_of.h"
+#include "support/temporary_directory_test.h"
 
 namespace vdc {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path scratch(const std::string& name) {
-  const fs::path directory = fs::temp_directory_path() / ("vdc_bop_depth_test_" + name);
-  fs::create_directories(directory);
-  return directory;
-}
+using BopDepthTest = test::TemporaryDirectoryTest;
 
 // An 8-bit gray PNG: what a colour or visualisation image saved as depth looks like.
 void writeEightBitPng(const std::string& path, int width, int height) {
@@ -34,16 +31,11 @@ void writeEightBitPng(const std::string& path, int width, int height) {
 }
 
 std::string errorOf(const std::string& path, int width, int height) {
-  try {
-    readBopDepthPng(path, width, height);
-  } catch (const Error& error) {
-    return error.what();
-  }
-  return "";
+  return test::errorOf([&] { readBopDepthPng(path, width, height); });
 }
 
-TEST(BopDepth, SixteenBitValuesRoundTrip) {
-  const fs::path path = scratch("round_trip") / "000000.png";
+TEST_F(BopDepthTest, SixteenBitValuesRoundTrip) {
+  const fs::path path = directory() / "000000.png";
   BopDepthImage image{5, 3, {}};
   for (int i = 0; i < 15; ++i) image.values.push_back(static_cast<std::uint16_t>(i * 4369 + 1));
   image.values[4] = 65535;
@@ -53,23 +45,22 @@ TEST(BopDepth, SixteenBitValuesRoundTrip) {
   EXPECT_EQ(read.values, image.values);
 }
 
-TEST(BopDepth, WrongDepthPngsAreRefusedWithTheirName) {
-  const fs::path directory = scratch("wrong");
-  const std::string eight_bit = (directory / "000001.png").string();
+TEST_F(BopDepthTest, WrongDepthPngsAreRefusedWithTheirName) {
+  const std::string eight_bit = (directory() / "000001.png").string();
   writeEightBitPng(eight_bit, 4, 4);
   const std::string message = errorOf(eight_bit, 4, 4);
   EXPECT_NE(message.find("000001.png"), std::string::npos) << message;
   EXPECT_NE(message.find("16-bit single-channel"), std::string::npos) << message;
 
-  const std::string small = (directory / "000002.png").string();
+  const std::string small = (directory() / "000002.png").string();
   writeBopDepthPng({4, 2, std::vector<std::uint16_t>(8, 1)}, small);
   const std::string size_message = errorOf(small, 640, 480);
   EXPECT_NE(size_message.find("000002.png is 4 x 2"), std::string::npos) << size_message;
 
-  const std::string missing = errorOf((directory / "absent.png").string(), 4, 4);
+  const std::string missing = errorOf((directory() / "absent.png").string(), 4, 4);
   EXPECT_NE(missing.find("absent.png"), std::string::npos) << missing;
 
-  const std::string not_png = (directory / "000003.png").string();
+  const std::string not_png = (directory() / "000003.png").string();
   std::ofstream(not_png) << "depth";
   EXPECT_NE(errorOf(not_png, 4, 4).find("000003.png"), std::string::npos);
 }

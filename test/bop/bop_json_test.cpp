@@ -4,21 +4,10 @@
 
 #include <string>
 
-#include "view_direction_classification/common/error.h"
+#include "support/error_of.h"
 
 namespace vdc {
 namespace {
-
-// The message of the vdc::Error the call throws ("" if none).
-template <typename Call>
-std::string errorOf(const Call& call) {
-  try {
-    call();
-  } catch (const Error& error) {
-    return error.what();
-  }
-  return "";
-}
 
 const CameraIntrinsics kSize{640, 480, 1, 1, 0, 0};
 
@@ -47,7 +36,7 @@ TEST(BopJson, SceneCameraWithoutPoseHasNone) {
 }
 
 TEST(BopJson, MissingKeyIsRefusedWithFileAndKey) {
-  const std::string message = errorOf([] {
+  const std::string message = test::errorOf([] {
     parseSceneCamera(R"({"7": {"cam_K": [1, 0, 0, 0, 1, 0, 0, 0, 1]}})", "scene_camera.json",
                      kSize);
   });
@@ -57,34 +46,35 @@ TEST(BopJson, MissingKeyIsRefusedWithFileAndKey) {
 }
 
 TEST(BopJson, WrongTypesAndSizesAreRefused) {
-  EXPECT_NE(errorOf([] {
+  EXPECT_NE(test::errorOf([] {
               parseSceneGt(
                   R"({"0": [{"obj_id": 1, "cam_R_m2c": [1, 0, 0], "cam_t_m2c": [0, 0, 0]}]})",
                   "scene_gt.json");
             }).find("cam_R_m2c"),
             std::string::npos);
-  EXPECT_NE(errorOf([] {
+  EXPECT_NE(test::errorOf([] {
               parseSceneGt(R"({"0": [{"obj_id": "1", "cam_R_m2c": [1, 0, 0, 0, 1, 0, 0, 0, 1],
                                       "cam_t_m2c": [0, 0, 0]}]})",
                            "scene_gt.json");
             }).find("obj_id"),
             std::string::npos);
-  EXPECT_NE(errorOf([] { parseSceneGt(R"({"x": []})", "scene_gt.json"); }).find("no image"),
+  EXPECT_NE(test::errorOf([] { parseSceneGt(R"({"x": []})", "scene_gt.json"); }).find("no image"),
             std::string::npos);
-  EXPECT_NE(errorOf([] {
+  EXPECT_NE(test::errorOf([] {
               parseModelsInfo(R"({"1": {"diameter": -3}})", "models_info.json");
             }).find("diameter"),
             std::string::npos);
-  EXPECT_NE(errorOf([] {
+  EXPECT_NE(test::errorOf([] {
               parseTestTargets("{", "test_targets_bop19.json");
             }).find("test_targets_bop19.json: not valid JSON"),
             std::string::npos);
-  EXPECT_NE(errorOf([] { parseCameraInfo(R"({"width": 640})", "camera.json"); }).find("height"),
-            std::string::npos);
+  EXPECT_NE(
+      test::errorOf([] { parseCameraInfo(R"({"width": 640})", "camera.json"); }).find("height"),
+      std::string::npos);
 }
 
 TEST(BopJson, HalfACameraPoseIsRefused) {
-  const std::string message = errorOf([] {
+  const std::string message = test::errorOf([] {
     parseSceneCamera(
         R"({"0": {"cam_K": [1, 0, 0, 0, 1, 0, 0, 0, 1], "depth_scale": 1, "cam_t_w2c": [0, 0, 0]}})",
         "scene_camera.json", kSize);
