@@ -66,6 +66,31 @@ TEST(BopMetrics, HalfTurnOfABoxIsAnErrorUnlessItIsASymmetry) {
       1e-9);
 }
 
+TEST(BopMetrics, SymmetryActsInTheModelFrameBeforeTheTruePose) {
+  // The box centred at (10, 0, 0) of its frame: its half-turn about z through its centre is
+  // x -> Rz(pi) x + (20, 0, 0). The truth is turned and shifted, so applying the symmetry
+  // after the pose instead of before it would not give the symmetric pose.
+  std::vector<Eigen::Vector3d> corners = boxCorners();
+  for (Eigen::Vector3d& corner : corners) corner.x() += 10;
+  BopModelInfo info;
+  info.diameter = 123;
+  info.symmetries_discrete.push_back(at(turnZ(M_PI), {20, 0, 0}));
+  const BopPose truth =
+      at(Eigen::AngleAxisd(0.5, Eigen::Vector3d(1, 2, 0).normalized()).toRotationMatrix(),
+         {30, -20, 900});
+  const BopPose symmetric =
+      at(truth.R * turnZ(M_PI), truth.R * Eigen::Vector3d(20, 0, 0) + truth.t);
+  const auto symmetries = bopSymmetryTransformations(info);
+  EXPECT_NEAR(maximumSymmetryAwareSurfaceDistance(symmetric, truth, corners, symmetries), 0.0,
+              1e-9);
+  EXPECT_NEAR(
+      maximumSymmetryAwareProjectionDistance(symmetric, truth, corners, symmetries, kCamera), 0.0,
+      1e-9);
+  EXPECT_GT(maximumSymmetryAwareSurfaceDistance(symmetric, truth, corners,
+                                                bopSymmetryTransformations({})),
+            50.0);
+}
+
 TEST(BopMetrics, ContinuousSymmetryLeavesOnlyTheDiscretisationStep) {
   // A ring of points about an axis through (0, 10, 0) along z: any turn about it is a symmetry.
   std::vector<Eigen::Vector3d> ring;
