@@ -20,6 +20,8 @@ struct BopDepthImage {
 
 // Reads a depth PNG. Throws vdc::Error naming the file if it is missing or no PNG, is not a
 // 16-bit single-channel (grayscale) image, or is not expected_width x expected_height.
+// libpng's simplified reader takes 16-bit data as linear and returns it unchanged; a file with a
+// gAMA or sRGB chunk saying otherwise would be converted (BOP's depth PNGs carry neither).
 BopDepthImage readBopDepthPng(const std::string& path, int expected_width, int expected_height);
 
 // Writes a 16-bit grayscale PNG; throws vdc::Error naming the file if it cannot be written.
