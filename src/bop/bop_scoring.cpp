@@ -5,6 +5,7 @@
 #include <tuple>
 
 #include "view_direction_classification/bop/bop_metrics.h"
+#include "view_direction_classification/bop/bop_vsd.h"
 #include "view_direction_classification/common/error.h"
 
 namespace vdc {
@@ -15,6 +16,7 @@ namespace {
 struct NormalisedError {
   double mssd = std::numeric_limits<double>::infinity();
   double mspd = std::numeric_limits<double>::infinity();
+  std::vector<double> vsd;  // per tau (vsdTaus of the diameter); empty: not scored
 };
 
 using ImageKey = std::tuple<int, int, int>;  // scene_id, im_id, obj_id
@@ -53,6 +55,18 @@ std::vector<BopPose> annotatedPoses(const BopScoringTruth& truth, const BopTarge
   return poses;
 }
 
+// VSD per tau of a matched estimate; empty without the model's mesh or the image's depth.
+std::vector<double> vsdErrors(const BopEstimate& estimate, const BopPose& annotated,
+                              const BopTarget& target, const BopScoringTruth& truth,
+                              const BopScoringModel& model) {
+  const auto depth = truth.depths.find({target.scene_id, target.im_id});
+  if (model.mesh_m.empty() || depth == truth.depths.end()) return {};
+  const BopCamera& camera = cameraOf(truth, target.scene_id, target.im_id);
+  const DepthRenderer renderer(model.mesh_m, camera.intrinsics);
+  return visibleSurfaceDiscrepancy(estimate.camera_from_model, annotated, renderer, depth->second,
+                                   camera.depth_scale, vsdTaus(model.info.diameter));
+}
+
 // The errors of the target's matched estimates (greedy, best score first).
 std::vector<NormalisedError> targetErrors(const BopTarget& target,
                                           const std::vector<const BopEstimate*>& estimates,
@@ -81,9 +95,29 @@ std::vector<NormalisedError> targetErrors(const BopTarget& target,
     }
     if (best < 0) break;
     matched[best] = true;
+    best_error.vsd = vsdErrors(*estimates[e], annotated[best], target, truth, model);
     errors.push_back(best_error);
   }
   return errors;
+}
+
+// The mean over VSD's taus and correctness thresholds of the fraction of the targets whose error
+// at that tau is below the threshold; scored only if every error has its VSD.
+void addVsdRecall(const std::vector<NormalisedError>& errors, BopRecall* recall) {
+  recall->vsd_scored = recall->targets > 0;
+  for (const NormalisedError& e : errors) recall->vsd_scored &= !e.vsd.empty();
+  if (!recall->vsd_scored) return;
+  const std::vector<double> thresholds = vsdCorrectThresholds();
+  const std::size_t taus = vsdTaus(1.0).size();
+  double sum = 0.0;
+  for (std::size_t t = 0; t < taus; ++t) {
+    for (const double threshold : thresholds) {
+      int correct = 0;
+      for (const NormalisedError& e : errors) correct += e.vsd[t] < threshold ? 1 : 0;
+      sum += std::min(1.0, static_cast<double>(correct) / recall->targets);
+    }
+  }
+  recall->vsd = sum / static_cast<double>(taus * thresholds.size());
 }
 
 BopRecall recallOf(int obj_id, int targets, const std::vector<NormalisedError>& errors) {
@@ -95,6 +129,7 @@ BopRecall recallOf(int obj_id, int targets, const std::vector<NormalisedError>& 
   recall.estimates = static_cast<int>(errors.size());
   recall.mssd = averageRecall(mssd, targets, mssdThresholds(1.0));
   recall.mspd = averageRecall(mspd, targets, mspdThresholds(640));
+  addVsdRecall(errors, &recall);
   return recall;
 }
 

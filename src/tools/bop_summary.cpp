@@ -5,15 +5,26 @@
 namespace vdc::tools {
 namespace {
 
+// BOP's AR: the mean of the three average recalls (of MSSD and MSPD where VSD was not scored).
+double averageRecallOf(const BopRecall& recall) {
+  return recall.vsd_scored ? (recall.vsd + recall.mssd + recall.mspd) / 3.0
+                           : 0.5 * (recall.mssd + recall.mspd);
+}
+
 nlohmann::json recallJson(const BopRecall& recall) {
-  return {{"obj_id", recall.obj_id},       {"targets", recall.targets},
-          {"estimates", recall.estimates}, {"ar_mssd", recall.mssd},
-          {"ar_mspd", recall.mspd},        {"ar_mssd_mspd", 0.5 * (recall.mssd + recall.mspd)}};
+  nlohmann::json json = {{"obj_id", recall.obj_id},       {"targets", recall.targets},
+                         {"estimates", recall.estimates}, {"ar_mssd", recall.mssd},
+                         {"ar_mspd", recall.mspd},        {"ar", averageRecallOf(recall)}};
+  json["ar_vsd"] = recall.vsd_scored ? nlohmann::json(recall.vsd) : nlohmann::json(nullptr);
+  return json;
 }
 
 void printRecall(const std::string& run, const std::string& object, const BopRecall& recall) {
-  std::printf("%-8s %-8s %7d %9d %7.3f %7.3f %7.3f\n", run.c_str(), object.c_str(), recall.targets,
-              recall.estimates, recall.mssd, recall.mspd, 0.5 * (recall.mssd + recall.mspd));
+  char vsd[16] = "-";
+  if (recall.vsd_scored) std::snprintf(vsd, sizeof(vsd), "%.3f", recall.vsd);
+  std::printf("%-8s %-8s %7d %9d %7s %7.3f %7.3f %7.3f\n", run.c_str(), object.c_str(),
+              recall.targets, recall.estimates, vsd, recall.mssd, recall.mspd,
+              averageRecallOf(recall));
 }
 
 }  // namespace
@@ -34,8 +45,8 @@ nlohmann::json bopSummaryJson(const std::vector<BopRun>& runs) {
 }
 
 void printBopSummary(const std::vector<BopRun>& runs) {
-  std::printf("%-8s %-8s %7s %9s %7s %7s %7s\n", "run", "obj_id", "targets", "estimates", "AR_MSSD",
-              "AR_MSPD", "mean");
+  std::printf("%-8s %-8s %7s %9s %7s %7s %7s %7s\n", "run", "obj_id", "targets", "estimates",
+              "AR_VSD", "AR_MSSD", "AR_MSPD", "AR");
   for (const BopRun& run : runs) {
     for (const BopRecall& recall : run.scores.per_object) {
       printRecall(run.name, std::to_string(recall.obj_id), recall);

@@ -19,8 +19,9 @@ struct BopRun {
   int images = 0;
 };
 
-// `vdc evaluate-bop`'s summary.json: per run, the MSSD and MSPD average recall per object and
-// overall, their mean (BOP's AR without VSD), the estimates and targets, the time per image.
+// `vdc evaluate-bop`'s summary.json: per run, the VSD, MSSD and MSPD average recall per object
+// and overall, their mean (BOP's AR; of MSSD and MSPD where VSD was not scored, ar_vsd null),
+// the estimates and targets, the time per image.
 nlohmann::json bopSummaryJson(const std::vector<BopRun>& runs);
 
 // The same as a table on stdout: one line per object and run, then the overall lines.

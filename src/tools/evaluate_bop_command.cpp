@@ -2,7 +2,7 @@
 // estimator on a BOP dataset's depth images (bop_estimation.h), each target image alone and,
 // where the scenes give camera poses, each scene's images fused as a view sequence. Writes BOP
 // results files (OUT/vdc-single_NAME-SPLIT.csv, OUT/vdc-fused_NAME-SPLIT.csv), scores them with
-// BOP's MSSD and MSPD recall (bop/bop_scoring.h) into OUT/summary.json and prints the table.
+// BOP's VSD, MSSD and MSPD recall (bop/bop_scoring.h) into OUT/summary.json and prints the table.
 // A subcommand of its own, as evaluate-scenes: it shares none of `evaluate`'s options.
 #include <pcl/console/print.h>
 
@@ -14,6 +14,7 @@
 #include <memory>
 #include <numeric>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bop_estimation.h"
@@ -66,7 +67,9 @@ std::map<int, BopScoringModel> scoringModels(const BopDatasetReader& dataset,
       throw Error("models_info.json has no entry for target object " +
                   std::to_string(target.obj_id));
     }
-    models[target.obj_id] = {info->second, verticesInMillimetres(dataset.modelMesh(target.obj_id))};
+    TriangleMesh mesh = dataset.modelMesh(target.obj_id);
+    std::vector<Eigen::Vector3d> vertices = verticesInMillimetres(mesh);
+    models[target.obj_id] = {info->second, std::move(vertices), std::move(mesh)};
   }
   return models;
 }
@@ -113,6 +116,12 @@ void runEvaluateBop(const EvaluateBopOptions& options) {
   for (const auto& [scene_id, images] : grouped) {
     BopEstimationInput input{&dataset, scene_id, dataset.scene(scene_id), images};
     truth.scenes[scene_id] = input.files;
+    // VSD compares with the image's depth (read again: a few hundred kB per image).
+    for (const auto& [im_id, image_targets] : images) {
+      if (input.files.cameras.count(im_id) != 0) {
+        truth.depths[{scene_id, im_id}] = dataset.depth(scene_id, im_id);
+      }
+    }
     const BopEstimation scene_single = estimateSingleViews(input, library, options.estimator);
     single.estimates.insert(single.estimates.end(), scene_single.estimates.begin(),
                             scene_single.estimates.end());
@@ -152,7 +161,8 @@ void addEvaluateBopCommand(CLI::App& app) {
   auto* command = app.add_subcommand(
       "evaluate-bop",
       "the scene estimator on a BOP dataset's depth images (each target image alone, and each "
-      "scene's images fused where it gives camera poses): BOP results files and MSSD/MSPD recall");
+      "scene's images fused where it gives camera poses): BOP results files and VSD/MSSD/MSPD "
+      "recall");
   command->add_option("--dataset", options->dataset, "the BOP dataset's folder")->required();
   command->add_option("--split", options->split, "the split's folder")->capture_default_str();
   command

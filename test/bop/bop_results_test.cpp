@@ -5,6 +5,9 @@
 #include <sstream>
 
 #include "view_direction_classification/bop/bop_scoring.h"
+#include "view_direction_classification/bop/bop_units.h"
+#include "view_direction_classification/geometry/depth_renderer.h"
+#include "view_direction_classification/geometry/primitive_meshes.h"
 
 namespace vdc {
 namespace {
@@ -83,6 +86,30 @@ TEST(BopResults, EstimatesOfAnotherImageAreNotMatched) {
   const BopScores scores = scoreBopEstimates({elsewhere}, c.targets, c.truth, c.models);
   EXPECT_EQ(scores.overall.mssd, 0.0);
   EXPECT_EQ(scores.overall.estimates, 0);
+}
+
+TEST(BopResults, VsdIsScoredWithAMeshAndADepthImage) {
+  ScoringCase c;
+  c.targets = {{0, 0, 1, 1}};
+  c.truth.scenes[0].ground_truth[0] = {{1, {Eigen::Matrix3d::Identity(), {0, 0, 600}}}};
+  BopScoringModel& model = c.models[1];
+  model.mesh_m = makeBoxMesh({0.1, 0.06, 0.04});
+  model.vertices = verticesInMillimetres(model.mesh_m);
+  BopCamera& camera = c.truth.scenes[0].cameras[0];
+  camera.depth_scale = 0.1;
+  const BopEstimate exact = estimateAt({0, 0, 600}, 1.0);
+  EXPECT_FALSE(scoreBopEstimates({exact}, c.targets, c.truth, c.models).overall.vsd_scored);
+
+  const DepthRenderer renderer(model.mesh_m, camera.intrinsics);
+  c.truth.depths[{0, 0}] =
+      quantiseDepth(renderer.renderDepth(isometryOf(exact.camera_from_model)), 640, 480, 0.1);
+  const BopScores exact_scores = scoreBopEstimates({exact}, c.targets, c.truth, c.models);
+  EXPECT_TRUE(exact_scores.overall.vsd_scored);
+  EXPECT_EQ(exact_scores.overall.vsd, 1.0);
+  // 300 mm aside: no overlap, VSD 1 at every tau, wrong at every threshold.
+  const BopScores aside =
+      scoreBopEstimates({estimateAt({300, 0, 600}, 1.0)}, c.targets, c.truth, c.models);
+  EXPECT_EQ(aside.overall.vsd, 0.0);
 }
 
 }  // namespace

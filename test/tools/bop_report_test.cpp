@@ -94,7 +94,11 @@ TEST_F(BopReportTest, EstimatorFindsTheMugInTheWrittenDataset) {
   BopScoringTruth truth;
   truth.scenes[0] = input.files;
   const std::map<int, BopScoringModel> models{
-      {3, {dataset.modelsInfo().at(3), verticesInMillimetres(dataset.modelMesh(3))}}};
+      {3,
+       {dataset.modelsInfo().at(3), verticesInMillimetres(dataset.modelMesh(3)),
+        dataset.modelMesh(3)}}};
+  for (const auto& [im_id, camera] : input.files.cameras)
+    truth.depths[{0, im_id}] = dataset.depth(0, im_id);
   for (const bool fused : {false, true}) {
     const BopEstimation estimation =
         fused ? estimateViewSequence(input, library, SceneEstimatorParameters{})
@@ -109,6 +113,8 @@ TEST_F(BopReportTest, EstimatorFindsTheMugInTheWrittenDataset) {
     // metres for mm) or of the wrong image scores 0.
     EXPECT_GE(scores.overall.mssd, 0.5) << (fused ? "fused" : "single");
     EXPECT_GE(scores.overall.mspd, 0.5) << (fused ? "fused" : "single");
+    EXPECT_TRUE(scores.overall.vsd_scored);
+    EXPECT_GE(scores.overall.vsd, 0.5) << (fused ? "fused" : "single");
   }
 }
 

@@ -3,20 +3,26 @@
 #include <map>
 #include <vector>
 
+#include "view_direction_classification/bop/bop_depth.h"
 #include "view_direction_classification/bop/bop_results.h"
 #include "view_direction_classification/bop/bop_types.h"
+#include "view_direction_classification/geometry/triangle_mesh.h"
 
 namespace vdc {
 
-// What the scoring needs of one object model: its models_info.json entry and its vertices [mm].
+// What the scoring needs of one object model: its models_info.json entry, its vertices [mm] and,
+// for VSD, its mesh in metres (empty: no VSD).
 struct BopScoringModel {
   BopModelInfo info;
   std::vector<Eigen::Vector3d> vertices;
+  TriangleMesh mesh_m;
 };
 
-// The ground truth of the images scored: their cameras and annotated objects, per scene.
+// The ground truth of the images scored: their cameras and annotated objects, per scene, and for
+// VSD their depth images by (scene_id, im_id) (an image without one: no VSD).
 struct BopScoringTruth {
   std::map<int, BopSceneFiles> scenes;
+  std::map<std::pair<int, int>, BopDepthImage> depths;
 };
 
 // Recall of one object (or of all: obj_id 0) over BOP's thresholds.
@@ -26,6 +32,10 @@ struct BopRecall {
   int estimates = 0;  // estimates scored (at most inst_count per target, the best-scored)
   double mssd = 0.0;  // average recall over the MSSD thresholds
   double mspd = 0.0;  // average recall over the MSPD thresholds
+  // Average recall over VSD's tau and correctness thresholds (bop_vsd.h), when every matched
+  // estimate had a mesh and a depth image to be scored with; else vsd_scored is false.
+  double vsd = 0.0;
+  bool vsd_scored = false;
 };
 
 struct BopScores {
