@@ -148,4 +148,21 @@ TEST_F(VdcCliTest, DamagedBopFilesFailWithOneLineNamingThem) {
       << bad_camera.output;
 }
 
+TEST_F(VdcCliTest, BopModelsInMillimetresScaleToMetresForTraining) {
+  ASSERT_EQ(runVdc("mesh mug --out " + path("mug.ply")).exit_code, 0);
+  ASSERT_EQ(runVdc("write-bop --model 1=" + path("mug.ply") +
+                   " --views 1 --known 1 --distractors 0 --no-noise --out " + path("bop"))
+                .exit_code,
+            0);
+  const std::string model = (directory() / "bop" / "models" / "obj_000001.ply").string();
+  EXPECT_NE(runVdc("mesh check " + model).output.find("looks like millimetres"), std::string::npos);
+  ASSERT_EQ(runVdc("mesh scale " + model + " --factor 0.001 --out " + path("m.ply")).exit_code, 0);
+  const ToolRun check = runVdc("mesh check " + path("m.ply"));
+  EXPECT_EQ(check.exit_code, 0) << check.output;
+  EXPECT_EQ(check.output.find("millimetres"), std::string::npos) << check.output;
+  // The same summary as the mesh it was written from (sizes in cm after the file name).
+  const std::string original = runVdc("mesh check " + path("mug.ply")).output;
+  EXPECT_EQ(original.substr(original.find(": ")), check.output.substr(check.output.find(": ")));
+}
+
 }  // namespace
