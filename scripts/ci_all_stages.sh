@@ -4,7 +4,7 @@
 # still running 20 s before the budget ends is stopped, and what follows takes seconds).
 #   1. make test        the README's test command (installs what it needs, builds, every test);
 #                       always run whole: the budget never cuts it.
-#   2. fuzz             the clang ASan + UBSan build's eight libFuzzer targets (build-asan/, shared
+#   2. fuzz             the clang ASan + UBSan build's nine libFuzzer targets (build-asan/, shared
 #                       with stage 3), each for FUZZ_SECONDS (60), in two lanes, shortened to
 #                       share what is left of the budget when that is less (at least 10 s each,
 #                       else not run).
@@ -75,9 +75,9 @@ if ! make deps-sanitize > "$logs/deps.log" 2>&1; then
 fi
 
 # Fuzz: build the targets, then share what is left (keeping 2 min for the bookkeeping) among
-# the eight, at most FUZZ_SECONDS each.
+# the nine, at most FUZZ_SECONDS each.
 fuzz_targets=(mesh model_bundle cloud_conversion bingham_conversion label_image_conversion
-  server_requests scene_segmentation scene_memory)
+  server_requests scene_segmentation scene_memory bop_json)
 fuzz_binaries=()
 for name in "${fuzz_targets[@]}"; do fuzz_binaries+=("vdc_${name}_fuzzer"); done
 start=$SECONDS
@@ -89,8 +89,8 @@ if [[ $build_status -ne 0 && $build_status -ne 124 ]]; then
 elif [[ $build_status -eq 124 ]]; then
   not_run+=("fuzz (the build did not finish within the budget)")
 else
-  # scripts/fuzz.sh runs the targets in FUZZ_JOBS (2) equal lanes at once: eight targets of S
-  # seconds take 8 S / 2.
+  # scripts/fuzz.sh runs the targets in FUZZ_JOBS (2) equal lanes at once: nine targets of S
+  # seconds take 9 S / 2.
   fuzz_jobs=${FUZZ_JOBS:-2}
   share=$(( ($(remaining) - 120) * fuzz_jobs / ${#fuzz_targets[@]} ))
   seconds=$(( share < ${FUZZ_SECONDS:-60} ? share : ${FUZZ_SECONDS:-60} ))

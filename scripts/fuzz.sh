@@ -18,7 +18,7 @@ build_dir=${SANITIZE_BUILD_DIR:-build-asan}
 seconds=${FUZZ_SECONDS:-60}
 export PATH=/usr/bin:/bin:$PATH
 all_targets=(mesh model_bundle cloud_conversion bingham_conversion label_image_conversion
-  server_requests scene_segmentation scene_memory)
+  server_requests scene_segmentation scene_memory bop_json)
 targets=("${@:-${all_targets[@]}}")
 
 build_targets=()

@@ -14,5 +14,7 @@ void addHeatmapCommand(CLI::App& app);
 void addEvaluateCommand(CLI::App& app);
 void addEvaluateScenesCommand(CLI::App& app);
 void addEvaluatePatrolCommand(CLI::App& app);
+void addWriteBopCommand(CLI::App& app);
+void addEvaluateBopCommand(CLI::App& app);
 
 }  // namespace vdc::tools

@@ -1,9 +1,12 @@
 // `vdc mesh mug --out mug.ply`: writes the built-in object.
 // `vdc mesh check FILE`: loads any supported mesh and reports whether it can be trained on.
+// `vdc mesh scale FILE --factor F --out OUT`: writes the mesh scaled, e.g. a BOP model (mm) in
+// metres with --factor 0.001, so that `vdc train` takes it.
 #include <iostream>
 #include <memory>
 
 #include "commands.h"
+#include "view_direction_classification/bop/bop_units.h"
 #include "view_direction_classification/geometry/mesh_check.h"
 #include "view_direction_classification/geometry/mesh_io.h"
 #include "view_direction_classification/geometry/mug_mesh.h"
@@ -47,6 +50,25 @@ void addMeshCommand(CLI::App& app) {
     for (const auto& warning : validateObjectMesh(loaded, *path)) {
       std::cerr << "warning: " << warning << "\n";
     }
+  });
+
+  auto* scale = mesh->add_subcommand(
+      "scale", "write a mesh scaled by a factor (a BOP model in mm to metres: --factor 0.001)");
+  struct ScaleOptions {
+    std::string path, out;
+    double factor = 0.001;
+  };
+  auto scaling = std::make_shared<ScaleOptions>();
+  scale->add_option("file", scaling->path, "mesh file")->required();
+  scale->add_option("--factor", scaling->factor, "every coordinate is multiplied by it")
+      ->capture_default_str()
+      ->check(CLI::Range(1e-6, 1e6));
+  scale->add_option("--out", scaling->out, "PLY file to write")->required();
+  scale->callback([scaling] {
+    const TriangleMesh scaled = scaledMesh(loadMesh(scaling->path), scaling->factor);
+    saveMeshPly(scaled, scaling->out);
+    std::cout << "wrote " << scaling->out << ": ";
+    printMeshSummary(scaled, checkMesh(scaled));
   });
 }
 

@@ -20,6 +20,8 @@ int main(int argc, char** argv) {
   vdc::tools::addEvaluateCommand(app);
   vdc::tools::addEvaluateScenesCommand(app);
   vdc::tools::addEvaluatePatrolCommand(app);
+  vdc::tools::addWriteBopCommand(app);
+  vdc::tools::addEvaluateBopCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

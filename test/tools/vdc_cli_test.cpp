@@ -132,4 +132,50 @@ TEST_F(VdcCliTest, AFailedTrainingLeavesAnExistingBundleUntouched) {
   EXPECT_EQ(entryCount(), 2);  // model.h5 and broken.ply
 }
 
+TEST_F(VdcCliTest, DamagedBopFilesFailWithOneLineNamingThem) {
+  ASSERT_EQ(runVdc("mesh mug --out " + path("mug.ply")).exit_code, 0);
+  ASSERT_EQ(runVdc("train --quick --views 4 --clouds-per-view 2 --mesh " + path("mug.ply") +
+                   " --out " + path("m.h5"))
+                .exit_code,
+            0);
+  const ToolRun written =
+      runVdc("write-bop --model 1=" + path("mug.ply") +
+             " --views 1 --known 1 --distractors 0 --no-noise --out " + path("bop"));
+  ASSERT_EQ(written.exit_code, 0) << written.output;
+  const std::string evaluate = "evaluate-bop --dataset " + path("bop") +
+                               " --bop-model 1=" + path("m.h5") + " --out " + path("eval") +
+                               " --no-fusion";
+
+  const fs::path depth = directory() / "bop" / "test" / "000000" / "depth" / "000000.png";
+  writeFile(depth, "not a PNG");
+  const ToolRun bad_depth = runVdc(evaluate);
+  expectOneFailureLine(bad_depth);
+  EXPECT_NE(bad_depth.output.find(depth.string()), std::string::npos) << bad_depth.output;
+
+  const fs::path camera = directory() / "bop" / "test" / "000000" / "scene_camera.json";
+  writeFile(camera, R"({"0": {"cam_K": [525, 0, 319.5, 0, 525, 239.5, 0, 0, 1]}})");
+  const ToolRun bad_camera = runVdc(evaluate);
+  expectOneFailureLine(bad_camera);
+  EXPECT_NE(bad_camera.output.find(camera.string() + ", image 0: missing key \"depth_scale\""),
+            std::string::npos)
+      << bad_camera.output;
+}
+
+TEST_F(VdcCliTest, BopModelsInMillimetresScaleToMetresForTraining) {
+  ASSERT_EQ(runVdc("mesh mug --out " + path("mug.ply")).exit_code, 0);
+  ASSERT_EQ(runVdc("write-bop --model 1=" + path("mug.ply") +
+                   " --views 1 --known 1 --distractors 0 --no-noise --out " + path("bop"))
+                .exit_code,
+            0);
+  const std::string model = (directory() / "bop" / "models" / "obj_000001.ply").string();
+  EXPECT_NE(runVdc("mesh check " + model).output.find("looks like millimetres"), std::string::npos);
+  ASSERT_EQ(runVdc("mesh scale " + model + " --factor 0.001 --out " + path("m.ply")).exit_code, 0);
+  const ToolRun check = runVdc("mesh check " + path("m.ply"));
+  EXPECT_EQ(check.exit_code, 0) << check.output;
+  EXPECT_EQ(check.output.find("millimetres"), std::string::npos) << check.output;
+  // The same summary as the mesh it was written from (sizes in cm after the file name).
+  const std::string original = runVdc("mesh check " + path("mug.ply")).output;
+  EXPECT_EQ(original.substr(original.find(": ")), check.output.substr(check.output.find(": ")));
+}
+
 }  // namespace
