@@ -14,5 +14,6 @@ void addHeatmapCommand(CLI::App& app);
 void addEvaluateCommand(CLI::App& app);
 void addEvaluateScenesCommand(CLI::App& app);
 void addEvaluatePatrolCommand(CLI::App& app);
+void addSensorStatsCommand(CLI::App& app);
 
 }  // namespace vdc::tools

@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   vdc::tools::addEvaluateCommand(app);
   vdc::tools::addEvaluateScenesCommand(app);
   vdc::tools::addEvaluatePatrolCommand(app);
+  vdc::tools::addSensorStatsCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
