@@ -5,6 +5,7 @@
 #include <pcl/console/print.h>
 #include <pcl/io/pcd_io.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -31,10 +32,30 @@ struct SensorStatsOptions {
   unsigned seed = 1;
 };
 
+// PCL's reader crashes on some files that are not PCD at all: read the header alone first and
+// require x, y and z fields.
+void checkScanHeader(const std::string& path) {
+  pcl::PCLPointCloud2 header;
+  Eigen::Vector4f origin;
+  Eigen::Quaternionf orientation;
+  int version = 0, data_type = 0;
+  unsigned int data_offset = 0;
+  if (pcl::PCDReader().readHeader(path, header, origin, orientation, version, data_type,
+                                  data_offset) != 0) {
+    throw Error("cannot read the point cloud " + path + ": not a PCD file");
+  }
+  for (const char* axis : {"x", "y", "z"}) {
+    const bool found = std::any_of(header.fields.begin(), header.fields.end(),
+                                   [axis](const pcl::PCLPointField& f) { return f.name == axis; });
+    if (!found) throw Error("the point cloud " + path + " has no " + axis + " field");
+  }
+}
+
 pcl::PointCloud<pcl::PointXYZ> loadScan(const std::string& path) {
   pcl::PointCloud<pcl::PointXYZ> cloud;
   // PCL prints its own complaint before returning an error; the one line below says it all.
   pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS);
+  checkScanHeader(path);
   if (pcl::io::loadPCDFile(path, cloud) != 0) {
     throw Error("cannot read the point cloud " + path + " (a PCD file with x y z fields)");
   }
@@ -64,7 +85,7 @@ void printHeader() {
 void printRow(const std::string& source, const DepthStatistics& s) {
   std::printf("%-44s %7zu %6.3f %9.1f %9.4f %6zu %8.3f %8.3f %8.3f\n", source.c_str(), s.points,
               s.median_depth, s.levels_per_cm, s.disparity_step_px, s.depth_edges,
-              s.edge_gap_fraction, s.flat_gap_fraction, s.flying_per_edge);
+              s.edge_gap_fraction, s.flat_gap_fraction, s.flying_fraction);
 }
 
 void checkOptions(const SensorStatsOptions& options) {
@@ -79,8 +100,11 @@ void checkOptions(const SensorStatsOptions& options) {
 
 void runSensorStats(const SensorStatsOptions& options) {
   checkOptions(options);
+  // Every scan read before the table starts: a bad file ends the run with its one-line error.
+  std::vector<DepthStatistics> scans;
+  for (const std::string& path : options.clouds) scans.push_back(depthStatistics(loadScan(path)));
   printHeader();
-  for (const std::string& path : options.clouds) printRow(path, depthStatistics(loadScan(path)));
+  for (std::size_t i = 0; i < scans.size(); ++i) printRow(options.clouds[i], scans[i]);
   const DepthRenderer renderer(mugOnTable());
   const Eigen::Isometry3d camera = cameraOverTable(options);
   std::mt19937 rng(options.seed);

@@ -52,10 +52,10 @@ TEST(DepthStatistics, EdgeFiguresSeeMissingPixelsAndFlyingPixelsAtDepthEdgesOnly
   EXPECT_EQ(exact.depth_edges, 2u * 132u);
   EXPECT_EQ(exact.edge_gap_fraction, 0.0);
   EXPECT_EQ(exact.flat_gap_fraction, 0.0);
-  EXPECT_EQ(exact.flying_per_edge, 0.0);
+  EXPECT_EQ(exact.flying_fraction, 0.0);
   EXPECT_EQ(lost.edge_gap_fraction, 1.0);
   EXPECT_EQ(lost.flat_gap_fraction, 0.0);
-  EXPECT_GT(tof.flying_per_edge, 0.1);
+  EXPECT_GT(tof.flying_fraction, 0.1);
   EXPECT_LT(tof.edge_gap_fraction, 0.01);
 }
 
@@ -66,7 +66,7 @@ TEST(DepthStatistics, AnUnorganisedCloudHasNoEdgeFiguresAndAnEmptyOneNoFigures) 
   const DepthStatistics unorganised = depthStatistics(cloud);
   EXPECT_GT(unorganised.points, 10000u);
   EXPECT_TRUE(std::isnan(unorganised.edge_gap_fraction));
-  EXPECT_TRUE(std::isnan(unorganised.flying_per_edge));
+  EXPECT_TRUE(std::isnan(unorganised.flying_fraction));
   const DepthStatistics empty = depthStatistics(Cloud());
   EXPECT_EQ(empty.points, 0u);
   EXPECT_TRUE(std::isnan(empty.median_depth));

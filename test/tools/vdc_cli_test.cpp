@@ -102,6 +102,30 @@ TEST_F(VdcCliTest, MissingCorruptAndForeignModelFilesFailWithOneLine) {
                               " --out " + path("e") + " --no-figure"));
 }
 
+TEST_F(VdcCliTest, UnknownOrContradictorySensorsAreRefused) {
+  EXPECT_EQ(runVdc("train --mesh m.ply --out m.h5 --sensor lidar").exit_code, 2);
+  EXPECT_EQ(runVdc("evaluate --model m.h5 --mesh m.ply --out e --sensor lidar").exit_code, 2);
+  EXPECT_EQ(runVdc("evaluate-scenes --model a=m.h5:m.ply --out e --sensor lidar").exit_code, 2);
+  const ToolRun contradictory = runVdc("train --mesh m.ply --out m.h5 --sensor tof --no-noise");
+  expectOneFailureLine(contradictory);
+  EXPECT_NE(contradictory.output.find("--sensor none"), std::string::npos) << contradictory.output;
+}
+
+TEST_F(VdcCliTest, SensorStatsRefusesFilesThatAreNotScansAndTabulatesEveryModel) {
+  writeFile(path("garbage.pcd"), "this is not a point cloud\n");
+  expectOneFailureLine(runVdc("sensor-stats --cloud " + path("garbage.pcd")));
+  writeFile(path("no_z.pcd"),
+            "VERSION .7\nFIELDS x y\nSIZE 4 4\nTYPE F F\nCOUNT 1 1\nWIDTH 1\nHEIGHT 1\n"
+            "POINTS 1\nDATA ascii\n1 2\n");
+  expectOneFailureLine(runVdc("sensor-stats --cloud " + path("no_z.pcd")));
+  const ToolRun run = runVdc("sensor-stats --distance 0.8");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  for (const char* model :
+       {"none", "kinect_gaussian", "structured_light", "active_stereo", "tof"}) {
+    EXPECT_NE(run.output.find(std::string("render: ") + model), std::string::npos) << model;
+  }
+}
+
 TEST_F(VdcCliTest, BadMeshesFailWithOneLine) {
   expectOneFailureLine(runVdc("mesh check " + path("absent.ply")));
   writeFile(path("broken.ply"), "ply\nformat ascii 1.0\nelement vertex 3\nend_header\n1 2\n");
