@@ -65,15 +65,16 @@ TEST_F(VdcCliTest, UsageErrorsExitTwo) {
   }
 }
 
-TEST_F(VdcCliTest, TrainingOverADistanceRangeIsRecordedInTheBundle) {
+TEST_F(VdcCliTest, TrainingOverADistanceRangeWithASensorIsRecordedInTheBundle) {
   ASSERT_EQ(runVdc("mesh mug --out " + path("mug.ply")).exit_code, 0);
   const ToolRun train =
       runVdc("train --quick --views 4 --clouds-per-view 2 --mesh " + path("mug.ply") + " --out " +
-             path("m.h5") + " --distance-range 0.8 1.2");
+             path("m.h5") + " --distance-range 0.8 1.2 --sensor tof");
   ASSERT_EQ(train.exit_code, 0) << train.output;
   const ToolRun inspect = runVdc("inspect " + path("m.h5"));
   EXPECT_NE(inspect.output.find("camera distances    0.80-1.20 m"), std::string::npos)
       << inspect.output;
+  EXPECT_NE(inspect.output.find("depth sensor        tof"), std::string::npos) << inspect.output;
 }
 
 TEST_F(VdcCliTest, BadStreamOptionsAreUsageErrorsNamingTheOption) {
