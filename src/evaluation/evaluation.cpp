@@ -209,7 +209,7 @@ pcl::PointCloud<pcl::PointXYZ> renderEvaluationView(const DepthRenderer& rendere
   std::seed_seq seeds{settings.seed, kNoiseStream, static_cast<std::uint32_t>(sequence),
                       static_cast<std::uint32_t>(candidate)};
   std::mt19937 rng(seeds);
-  const DepthNoiseModel noise{settings.noise};
+  const DepthNoiseModel noise{settings.noise, sensorModel(settings.sensor)};
   pcl::PointCloud<pcl::PointXYZ> cloud = renderer.render(camera_from_object, noise, &rng);
   if (radius == kAllVisible) return cloud;
   return cropToAnchors(cloud, camera_from_object, anchors, radius);

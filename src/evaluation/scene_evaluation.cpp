@@ -40,8 +40,8 @@ void evaluateScene(int scene_index, const std::vector<SceneEvaluationModel>& mod
   std::mt19937 rng(seed);
   for (std::size_t v = 0; v < scene.world_from_camera.size(); ++v) {
     const Eigen::Isometry3d& world_from_camera = scene.world_from_camera[v];
-    const SceneView view =
-        renderer.render(world_from_camera, DepthNoiseModel{settings.noise}, &rng);
+    const SceneView view = renderer.render(
+        world_from_camera, DepthNoiseModel{settings.noise, sensorModel(settings.sensor)}, &rng);
     SceneViewRecord record;
     record.scene = scene_index;
     record.view = static_cast<int>(v) + 1;

@@ -103,7 +103,7 @@ StreamSequenceResult runStream(const std::shared_ptr<const ModelBundle>& model,
   const Eigen::Isometry3d world_from_object = sequence.worldFromObject();
   OrientationEstimator estimator(model, settings.estimator);
   std::mt19937 noise_rng = generatorOf(settings.seed, kStreamNoiseTag, sequence_index);
-  const DepthNoiseModel noise{settings.noise};
+  const DepthNoiseModel noise{settings.noise, sensorModel(settings.sensor)};
   StreamSequenceResult out;
   for (std::size_t k = 0; k < frames.size(); ++k) {
     const StreamFrame& frame = frames[k];

@@ -8,6 +8,7 @@
 
 #include "view_direction_classification/common/error.h"
 #include "view_direction_classification/geometry/mesh_check.h"
+#include "view_direction_classification/geometry/sensor_simulation.h"
 
 namespace vdc {
 namespace {
@@ -149,15 +150,13 @@ pcl::PointCloud<pcl::PointXYZ> DepthRenderer::render(const Eigen::Isometry3d& ca
   if (noise.enabled && rng == nullptr) {
     throw Error("the depth renderer needs a random number generator when noise is enabled");
   }
+  if (noise.enabled && noise.sensor.kind != DepthSensor::kKinectGaussian) {
+    return cloudOfDepth(sensorDepth(camera_from_object, noise.sensor, *rng));
+  }
   std::vector<float> inverse_depth;
   rasterize(camera_from_object, &inverse_depth);
 
-  const float nan = std::numeric_limits<float>::quiet_NaN();
-  pcl::PointCloud<pcl::PointXYZ> cloud;
-  cloud.points.assign(inverse_depth.size(), pcl::PointXYZ(nan, nan, nan));
-  cloud.width = static_cast<std::uint32_t>(intrinsics_.width);
-  cloud.height = static_cast<std::uint32_t>(intrinsics_.height);
-  cloud.is_dense = false;
+  pcl::PointCloud<pcl::PointXYZ> cloud = emptyCloud();
   std::normal_distribution<double> standard_normal(0.0, 1.0);
   for (int row = 0; row < intrinsics_.height; ++row) {
     for (int col = 0; col < intrinsics_.width; ++col) {
@@ -168,10 +167,48 @@ pcl::PointCloud<pcl::PointXYZ> DepthRenderer::render(const Eigen::Isometry3d& ca
         z += noise.sigma(z) * standard_normal(*rng);
         if (z < kNearPlane) continue;
       }
-      pcl::PointXYZ& p = cloud.points[index];
-      p.x = static_cast<float>((col - intrinsics_.cx) * z / intrinsics_.fx);
-      p.y = static_cast<float>((row - intrinsics_.cy) * z / intrinsics_.fy);
-      p.z = static_cast<float>(z);
+      setPoint(col, row, z, &cloud.points[index]);
+    }
+  }
+  return cloud;
+}
+
+std::vector<float> DepthRenderer::sensorDepth(const Eigen::Isometry3d& camera_from_object,
+                                              const SensorModel& sensor, std::mt19937& rng) const {
+  checkSensorModel(sensor);
+  const std::vector<float> depth = renderDepth(camera_from_object);
+  std::vector<float> projector_depth;
+  if (sensor.shadows) {
+    // The projector (second imager) sits at +baseline along the camera's x axis.
+    const Eigen::Isometry3d projector_from_camera(Eigen::Translation3d(-sensor.baseline, 0.0, 0.0));
+    projector_depth = renderDepth(projector_from_camera * camera_from_object);
+  }
+  return simulateSensor(sensor, intrinsics_, depth, projector_depth, rng);
+}
+
+pcl::PointCloud<pcl::PointXYZ> DepthRenderer::emptyCloud() const {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  cloud.points.assign(static_cast<std::size_t>(intrinsics_.width) * intrinsics_.height,
+                      pcl::PointXYZ(nan, nan, nan));
+  cloud.width = static_cast<std::uint32_t>(intrinsics_.width);
+  cloud.height = static_cast<std::uint32_t>(intrinsics_.height);
+  cloud.is_dense = false;
+  return cloud;
+}
+
+void DepthRenderer::setPoint(int col, int row, double z, pcl::PointXYZ* point) const {
+  point->x = static_cast<float>((col - intrinsics_.cx) * z / intrinsics_.fx);
+  point->y = static_cast<float>((row - intrinsics_.cy) * z / intrinsics_.fy);
+  point->z = static_cast<float>(z);
+}
+
+pcl::PointCloud<pcl::PointXYZ> DepthRenderer::cloudOfDepth(const std::vector<float>& depth) const {
+  pcl::PointCloud<pcl::PointXYZ> cloud = emptyCloud();
+  for (int row = 0; row < intrinsics_.height; ++row) {
+    for (int col = 0; col < intrinsics_.width; ++col) {
+      const std::size_t index = static_cast<std::size_t>(row) * intrinsics_.width + col;
+      if (depth[index] >= kNearPlane) setPoint(col, row, depth[index], &cloud.points[index]);
     }
   }
   return cloud;

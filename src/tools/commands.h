@@ -16,5 +16,6 @@ void addEvaluateScenesCommand(CLI::App& app);
 void addEvaluatePatrolCommand(CLI::App& app);
 void addWriteBopCommand(CLI::App& app);
 void addEvaluateBopCommand(CLI::App& app);
+void addSensorStatsCommand(CLI::App& app);
 
 }  // namespace vdc::tools

@@ -19,6 +19,7 @@
 #include "scene_evaluation_csv.h"
 #include "scene_evaluation_options.h"
 #include "scene_evaluation_summary.h"
+#include "sensor_option.h"
 #include "view_direction_classification/common/error.h"
 
 namespace vdc::tools {
@@ -32,6 +33,7 @@ struct EvaluateScenesOptions {
   std::vector<std::string> distractors;
   std::string out_dir;
   bool no_noise = false;
+  std::string sensor;  // --sensor; empty: not given
   SceneEvaluationSettings settings;
 };
 
@@ -52,7 +54,9 @@ void runEvaluateScenes(EvaluateScenesOptions options) {
   pcl::console::setVerbosityLevel(pcl::console::L_ERROR);
   const std::vector<SceneEvaluationModel> models = loadSceneModels(options.models);
   const std::vector<TriangleMesh> distractors = loadDistractorMeshes(options.distractors);
-  options.settings.noise = !options.no_noise;
+  const SensorSelection sensor = selectSensor(options.sensor, options.no_noise);
+  options.settings.noise = sensor.noise;
+  options.settings.sensor = sensor.sensor;
   checkSceneEvaluationSettings(options.settings);
   std::fprintf(stderr,
                "%d scenes x %d views, %d known + %d distractors each, %zu models, seed %u\n",
@@ -102,6 +106,7 @@ void addEvaluateScenesCommand(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::Range(0, 100));
   command->add_flag("--no-noise", options->no_noise, "render the views without depth noise");
+  addSensorOption(*command, &options->sensor);
   // The scene estimator's identity settings and the instances' refinement views: the node's
   // identity_unknown_score, identity_min_probability and refinement_views.
   IdentificationParameters& identity = s.estimator.identification;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "evaluation_labels.h"
+#include "sensor_option.h"
 #include "view_direction_classification/common/error.h"
 #include "view_direction_classification/estimation/refinement_mode.h"
 #include "view_direction_classification/geometry/mug_mesh.h"
@@ -424,6 +425,10 @@ void addEvaluateOptions(CLI::App& command, EvaluateOptions& options) {
   command.add_flag("--no-noise", options.no_noise, "render the views without sensor noise");
   options.recorded.push_back({nlohmann::json::json_pointer("/noise"),
                               [](const EvaluationSettings& s) { return s.noise; }});
+  addSensorOption(command, &options.sensor);
+  options.recorded.push_back(
+      {nlohmann::json::json_pointer("/sensor"),
+       [](const EvaluationSettings& s) { return selectionName(s.noise, s.sensor); }});
   command.add_flag("--no-figure", options.no_figure, "no plots (no matplotlib needed)");
 }
 
@@ -447,7 +452,9 @@ EvaluationSettings resolveSettings(EvaluationSettings settings, const EvaluateOp
                                    const ModelBundle& model) {
   // Evaluate at the distance the model was trained for unless told otherwise.
   if (!options.distance_given) settings.distance = model.parameters.distance;
-  settings.noise = !options.no_noise;
+  const SensorSelection sensor = selectSensor(options.sensor, options.no_noise);
+  settings.noise = sensor.noise;
+  settings.sensor = sensor.sensor;
   checkEvaluationSettings(settings);
   return settings;
 }

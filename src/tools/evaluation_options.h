@@ -28,6 +28,7 @@ struct EvaluateOptions {
   std::string anchors;     // "x,y,z;x,y,z"; empty: the built-in mug's two handle points
   bool baseline = false;
   bool no_noise = false;
+  std::string sensor;  // --sensor; empty: not given
   bool no_figure = false;
   bool distance_given = false;            // --distance; otherwise the model's training distance
   EvaluationSettings settings;            // the options that set a field directly
@@ -59,7 +60,7 @@ struct EvaluationRequest {
 EvaluationRequest parseEvaluateOptions(const EvaluateOptions& options);
 
 // The settings completed for `model`: its training distance unless --distance was given, and the
-// noise; throws vdc::Error for a bad setting (checkEvaluationSettings).
+// noise and sensor; throws vdc::Error for a bad setting (checkEvaluationSettings).
 EvaluationSettings resolveSettings(EvaluationSettings settings, const EvaluateOptions& options,
                                    const ModelBundle& model);
 

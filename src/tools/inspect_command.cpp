@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "commands.h"
+#include "sensor_option.h"
 #include "view_direction_classification/training/model_bundle.h"
 
 namespace vdc::tools {
@@ -44,6 +45,7 @@ nlohmann::json describe(const ModelBundle& bundle, const std::string& path) {
       {"distance_range_m",
        {bundle.parameters.distance * (1.0 - bundle.parameters.distance_jitter),
         bundle.parameters.distance * (1.0 + bundle.parameters.distance_jitter)}},
+      {"sensor", selectionName(bundle.parameters.noise, bundle.parameters.sensor)},
       {"classifier_clusters", bundle.parameters.clusters},
       {"surface_points", static_cast<int>(bundle.surface_points.size())},
       {"extent_m",
@@ -69,6 +71,8 @@ void printText(const nlohmann::json& j) {
   const auto& distances = j["distance_range_m"];
   std::printf("  camera distances    %.2f-%.2f m (training clouds)\n", distances[0].get<double>(),
               distances[1].get<double>());
+  std::printf("  depth sensor        %s (training clouds)\n",
+              j["sensor"].get<std::string>().c_str());
   std::printf("  surface points      %d (%d observable)\n", j["surface_points"].get<int>(),
               j["observable_surface_points"].get<int>());
   const auto& extent = j["extent_m"];

@@ -10,6 +10,7 @@
 
 #include "commands.h"
 #include "progress_bar.h"
+#include "sensor_option.h"
 #include "view_direction_classification/geometry/mesh_io.h"
 #include "view_direction_classification/geometry/view_sphere.h"
 #include "view_direction_classification/training/model_bundle.h"
@@ -24,6 +25,7 @@ struct TrainOptions {
   std::string out_path;
   bool quick = false;
   bool no_noise = false;
+  std::string sensor;                  // --sensor; empty: not given
   std::vector<double> distance_range;  // [min, max] camera distances [m], when given
   TrainingParameters parameters;
 };
@@ -58,15 +60,17 @@ void runTrain(TrainOptions options, const CLI::App& command) {
     parameters.surface_spacing = quick.surface_spacing;
   }
   if (!options.distance_range.empty()) applyDistanceRange(options.distance_range, &parameters);
-  parameters.noise = !options.no_noise;
+  const SensorSelection sensor = selectSensor(options.sensor, options.no_noise);
+  parameters.noise = sensor.noise;
+  parameters.sensor = sensor.sensor;
   parameters.mesh_name = options.mesh_path;
   const TriangleMesh mesh = loadMesh(options.mesh_path);
 
-  std::fprintf(stderr, "training on %s: %d views x %d clouds at %.2f-%.2f m, seed %u, noise %s\n",
+  std::fprintf(stderr, "training on %s: %d views x %d clouds at %.2f-%.2f m, seed %u, sensor %s\n",
                options.mesh_path.c_str(), parameters.views, parameters.clouds_per_view,
                parameters.distance * (1.0 - parameters.distance_jitter),
                parameters.distance * (1.0 + parameters.distance_jitter), parameters.seed,
-               parameters.noise ? "on" : "off");
+               selectionName(parameters.noise, parameters.sensor).c_str());
   ProgressBar progress;
   TrainingReport report;
   const ModelBundle bundle =
@@ -147,6 +151,7 @@ void addTrainCommand(CLI::App& app) {
                    "(default 0.54 0.66: 0.6 m +- 10 %)")
       ->expected(2);
   train->add_flag("--no-noise", options->no_noise, "render training clouds without noise");
+  addSensorOption(*train, &options->sensor);
   train->callback([options, train] { runTrain(*options, *train); });
 }
 

@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   vdc::tools::addEvaluatePatrolCommand(app);
   vdc::tools::addWriteBopCommand(app);
   vdc::tools::addEvaluateBopCommand(app);
+  vdc::tools::addSensorStatsCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

@@ -16,7 +16,9 @@
 // descriptor dimensions, K clusters.
 //   /                          attributes format = "view_direction_classification model bundle",
 //                              format_version = 2
-//   /parameters                attributes: one per TrainingParameters field, same names
+//   /parameters                attributes: one per TrainingParameters field, same names;
+//                              `sensor` (a sensor name, sensor_model.h) is optional: bundles
+//                              written before it was recorded trained with kinect_gaussian
 //   /views/directions          M x 3 float64, unit viewing directions, object frame
 //   /views/centroid_offsets    M x 3 float64, mean visible-part centroid per direction
 //   /classifier                attributes num_views (= M), clusters (= K)
@@ -261,6 +263,8 @@ void writeBundle(Hdf5File& file, const ModelBundle& b, const ClassifierArrays& c
     }
   });
 
+  file.writeAttribute("parameters", "sensor", std::string(sensorName(b.parameters.sensor)));
+
   file.createGroup("views");
   file.writeMatrix<double>("views/directions", toMatrix(b.view_directions));
   file.writeMatrix<double>("views/centroid_offsets", b.centroid_offsets);
@@ -311,6 +315,18 @@ T readInteger(const Hdf5File& file, const Checker& check, const std::string& obj
   return static_cast<T>(value);
 }
 
+// The training sensor; optional (kinect_gaussian, the only one before it was recorded).
+DepthSensor readSensor(const Hdf5File& file, const Checker& check) {
+  if (!file.hasAttribute("parameters", "sensor")) return DepthSensor::kKinectGaussian;
+  const std::string name = file.readStringAttribute("parameters", "sensor");
+  try {
+    return parseDepthSensor(name);
+  } catch (const Error& e) {
+    check.fail(std::string("attribute parameters/sensor: ") + e.what());
+  }
+  return DepthSensor::kKinectGaussian;  // not reached: fail() throws
+}
+
 ModelBundle readBundle(const Hdf5File& file, const Checker& check, std::int64_t version,
                        ClassifierArrays* c) {
   ModelBundle b;
@@ -330,6 +346,8 @@ ModelBundle readBundle(const Hdf5File& file, const Checker& check, std::int64_t 
       value = readInteger<T>(file, check, "parameters", name);
     }
   });
+
+  b.parameters.sensor = readSensor(file, check);
 
   const Eigen::MatrixXd directions = file.readMatrix<double>("views/directions");
   check.matrix("views/directions", directions, directions.rows(), 3);

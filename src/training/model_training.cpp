@@ -68,6 +68,7 @@ ViewSimulation simulationOf(const TrainingParameters& p) {
   s.distance = p.distance;
   s.distance_jitter = p.distance_jitter;
   s.noise = p.noise;
+  s.sensor = p.sensor;
   return s;
 }
 

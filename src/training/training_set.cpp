@@ -52,7 +52,7 @@ TrainingSet generateTrainingSet(const DepthRenderer& renderer, const ViewSphere&
     TrainingCloud& cloud = set.clouds[static_cast<std::size_t>(c)];
     cloud.view = view;
     cloud.camera_from_object = sampleTrainingPose(sphere, view, simulation, rng);
-    const DepthNoiseModel noise{simulation.noise};
+    const DepthNoiseModel noise{simulation.noise, sensorModel(simulation.sensor)};
     const auto rendered = renderer.render(cloud.camera_from_object, noise, &rng);
 
     const Eigen::Isometry3d object_from_camera = cloud.camera_from_object.inverse();

@@ -104,6 +104,20 @@ TEST(EvaluationTest, SameSeedGivesIdenticalErrorsWhateverTheThreadCount) {
   }
 }
 
+TEST(EvaluationTest, TheSensorSettingRendersTheViews) {
+  EvaluationSettings settings = smallSettings();
+  settings.visibility_radii = {kAllVisible};
+  const auto errors = [&settings] {
+    return evaluateEstimator(test::quickMugModel(), makeMug(), mugHandleAnchors(),
+                             EvaluationPlanner::kRandom, settings)
+        .settings[0]
+        .errors_deg;
+  };
+  const auto by_default = errors();
+  settings.sensor = DepthSensor::kTimeOfFlight;
+  EXPECT_NE(errors(), by_default);  // other views, other errors
+}
+
 TEST(EvaluationTest, UtilityPlannersRunOnTheSameSequencesWithFiniteErrors) {
   EvaluationSettings settings = smallSettings();
   settings.sequences = 1;

@@ -87,4 +87,18 @@ inline std::pair<int, double> nearestTriangle(const TriangleMesh& mesh, const Ei
   return best;
 }
 
+// A 0.2 m square at 0.8 m in front of a 1.4 m square at 1 m, both facing a camera at the origin:
+// one 0.2 m depth edge all around the small square, flat surfaces elsewhere (the sensor models'
+// tests).
+inline TriangleMesh makeDepthStep() {
+  TriangleMesh mesh = makeSquare(0.2f, 0.8f);
+  const TriangleMesh back = makeSquare(1.4f, 1.0f);
+  const int offset = static_cast<int>(mesh.vertices.size());
+  mesh.vertices.insert(mesh.vertices.end(), back.vertices.begin(), back.vertices.end());
+  for (const Eigen::Vector3i& t : back.triangles) {
+    mesh.triangles.emplace_back(t.array() + offset);
+  }
+  return mesh;
+}
+
 }  // namespace vdc::test

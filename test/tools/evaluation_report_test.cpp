@@ -16,6 +16,7 @@
 #include "evaluation_labels.h"
 #include "evaluation_options.h"
 #include "evaluation_summary.h"
+#include "sensor_option.h"
 #include "view_direction_classification/common/error.h"
 
 namespace vdc::tools {
@@ -258,6 +259,7 @@ TEST_F(EvaluateOptionsTest, SummaryRecordsEverySettingARunUsedUnderItsKey) {
                                    {"seed", 5u},
                                    {"distance_m", 0.5},
                                    {"noise", false},
+                                   {"sensor", "none"},
                                    {"stream_rate_hz", 15.0},
                                    {"stream_dwell_s", 3.0},
                                    {"camera_pose_noise", {{"deg", 1.0}, {"mm", 5.0}}},
@@ -310,6 +312,45 @@ TEST_F(EvaluateOptionsTest, DistanceIsTheModelsUnlessGiven) {
   const EvaluationRequest request = parseEvaluateOptions(options_);
   EXPECT_EQ(resolveSettings(request.settings, options_, model).distance, 0.7);
   EXPECT_TRUE(resolveSettings(request.settings, options_, model).noise);
+}
+
+TEST_F(EvaluateOptionsTest, SensorIsTheDefaultGaussianUnlessGivenAndIsRecorded) {
+  parse("");
+  const ModelBundle model;
+  const EvaluationSettings by_default =
+      resolveSettings(parseEvaluateOptions(options_).settings, options_, model);
+  EXPECT_TRUE(by_default.noise);
+  EXPECT_EQ(by_default.sensor, DepthSensor::kKinectGaussian);
+  EXPECT_EQ(recordedSettings(options_, by_default)["sensor"], "kinect_gaussian");
+
+  CLI::App command{"evaluate"};
+  EvaluateOptions options;
+  addEvaluateOptions(command, options);
+  command.parse("--model m --mesh m --out o --sensor tof", false);
+  const EvaluationSettings tof =
+      resolveSettings(parseEvaluateOptions(options).settings, options, model);
+  EXPECT_TRUE(tof.noise);
+  EXPECT_EQ(tof.sensor, DepthSensor::kTimeOfFlight);
+  EXPECT_EQ(recordedSettings(options, tof)["sensor"], "tof");
+}
+
+TEST_F(EvaluateOptionsTest, SensorNoneIsNoNoiseAndAnUnknownOrContradictorySensorIsRefused) {
+  EXPECT_FALSE(selectSensor("none", false).noise);
+  EXPECT_EQ(selectSensor("", false).sensor, DepthSensor::kKinectGaussian);
+  EXPECT_FALSE(selectSensor("", true).noise);
+  EXPECT_EQ(selectSensor("structured_light", false).sensor, DepthSensor::kStructuredLight);
+  try {
+    selectSensor("active_stereo", true);
+    ADD_FAILURE() << "--no-noise with --sensor active_stereo was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("--no-noise contradicts --sensor active_stereo"),
+              std::string::npos);
+  }
+  CLI::App command{"evaluate"};
+  EvaluateOptions options;
+  addEvaluateOptions(command, options);
+  EXPECT_THROW(command.parse("--model m --mesh m --out o --sensor kinect2", false),
+               CLI::ValidationError);
 }
 
 TEST_F(EvaluateOptionsTest, ListsParseIntoRadiiPlannersAndAnchors) {

@@ -65,15 +65,16 @@ TEST_F(VdcCliTest, UsageErrorsExitTwo) {
   }
 }
 
-TEST_F(VdcCliTest, TrainingOverADistanceRangeIsRecordedInTheBundle) {
+TEST_F(VdcCliTest, TrainingOverADistanceRangeWithASensorIsRecordedInTheBundle) {
   ASSERT_EQ(runVdc("mesh mug --out " + path("mug.ply")).exit_code, 0);
   const ToolRun train =
       runVdc("train --quick --views 4 --clouds-per-view 2 --mesh " + path("mug.ply") + " --out " +
-             path("m.h5") + " --distance-range 0.8 1.2");
+             path("m.h5") + " --distance-range 0.8 1.2 --sensor tof");
   ASSERT_EQ(train.exit_code, 0) << train.output;
   const ToolRun inspect = runVdc("inspect " + path("m.h5"));
   EXPECT_NE(inspect.output.find("camera distances    0.80-1.20 m"), std::string::npos)
       << inspect.output;
+  EXPECT_NE(inspect.output.find("depth sensor        tof"), std::string::npos) << inspect.output;
 }
 
 TEST_F(VdcCliTest, BadStreamOptionsAreUsageErrorsNamingTheOption) {
@@ -113,6 +114,30 @@ TEST_F(VdcCliTest, MissingCorruptAndForeignModelFilesFailWithOneLine) {
   expectOneFailureLine(runVdc("inspect " + path("mug.ply")));
   expectOneFailureLine(runVdc("evaluate --model " + path("mug.ply") + " --mesh " + path("mug.ply") +
                               " --out " + path("e") + " --no-figure"));
+}
+
+TEST_F(VdcCliTest, UnknownOrContradictorySensorsAreRefused) {
+  EXPECT_EQ(runVdc("train --mesh m.ply --out m.h5 --sensor lidar").exit_code, 2);
+  EXPECT_EQ(runVdc("evaluate --model m.h5 --mesh m.ply --out e --sensor lidar").exit_code, 2);
+  EXPECT_EQ(runVdc("evaluate-scenes --model a=m.h5:m.ply --out e --sensor lidar").exit_code, 2);
+  const ToolRun contradictory = runVdc("train --mesh m.ply --out m.h5 --sensor tof --no-noise");
+  expectOneFailureLine(contradictory);
+  EXPECT_NE(contradictory.output.find("--sensor none"), std::string::npos) << contradictory.output;
+}
+
+TEST_F(VdcCliTest, SensorStatsRefusesFilesThatAreNotScansAndTabulatesEveryModel) {
+  writeFile(path("garbage.pcd"), "this is not a point cloud\n");
+  expectOneFailureLine(runVdc("sensor-stats --cloud " + path("garbage.pcd")));
+  writeFile(path("no_z.pcd"),
+            "VERSION .7\nFIELDS x y\nSIZE 4 4\nTYPE F F\nCOUNT 1 1\nWIDTH 1\nHEIGHT 1\n"
+            "POINTS 1\nDATA ascii\n1 2\n");
+  expectOneFailureLine(runVdc("sensor-stats --cloud " + path("no_z.pcd")));
+  const ToolRun run = runVdc("sensor-stats --distance 0.8");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  for (const char* model :
+       {"none", "kinect_gaussian", "structured_light", "active_stereo", "tof"}) {
+    EXPECT_NE(run.output.find(std::string("render: ") + model), std::string::npos) << model;
+  }
 }
 
 TEST_F(VdcCliTest, BadMeshesFailWithOneLine) {

@@ -36,6 +36,7 @@ ModelBundle makeBundle() {
   b.parameters.seed = 4000000000u;  // above INT_MAX: must survive as unsigned
   b.parameters.distance = 0.65;
   b.parameters.noise = false;
+  b.parameters.sensor = DepthSensor::kTimeOfFlight;  // not the default: must be recorded
   b.parameters.fx = 525.123456789;
   b.parameters.clusters = K;
   b.parameters.l2 = 1.0 / 3.0;
@@ -116,6 +117,7 @@ TEST_F(ModelBundleFiles, RoundTripIsBitIdentical) {
   EXPECT_EQ(a.distance, b.distance);
   EXPECT_EQ(a.distance_jitter, b.distance_jitter);
   EXPECT_EQ(a.noise, b.noise);
+  EXPECT_EQ(a.sensor, b.sensor);
   EXPECT_EQ(a.image_width, b.image_width);
   EXPECT_EQ(a.image_height, b.image_height);
   EXPECT_EQ(a.fx, b.fx);
@@ -304,6 +306,32 @@ TEST_F(ModelBundleFiles, LoadsAVersionOneBundleWithTheSurfaceSamplesBoundingBox)
   for (const Eigen::Vector3f& p : makeBundle().surface_points) expected.extend(p.cast<double>());
   EXPECT_EQ(loaded.bounds.min(), expected.min());
   EXPECT_EQ(loaded.bounds.max(), expected.max());
+}
+
+// Bundles written before the training sensor was recorded were trained with the default.
+TEST_F(ModelBundleFiles, LoadsABundleWithoutASensorAsTrainedWithTheDefaultSensor) {
+  const std::string path = editedBundle(
+      "nosensor.h5", [](hid_t id) { H5Adelete_by_name(id, "parameters", "sensor", H5P_DEFAULT); });
+  EXPECT_EQ(loadModelBundle(path).parameters.sensor, DepthSensor::kKinectGaussian);
+}
+
+TEST_F(ModelBundleFiles, RefusesAnUnknownSensorNamingIt) {
+  const std::string path = editedBundle("badsensor.h5", [](hid_t id) {
+    H5Adelete_by_name(id, "parameters", "sensor", H5P_DEFAULT);
+    const hid_t group = H5Gopen2(id, "parameters", H5P_DEFAULT);
+    const hid_t type = H5Tcopy(H5T_C_S1);
+    H5Tset_size(type, 6);
+    const hid_t space = H5Screate(H5S_SCALAR);
+    const hid_t attribute = H5Acreate2(group, "sensor", type, space, H5P_DEFAULT, H5P_DEFAULT);
+    H5Awrite(attribute, type, "lidar");
+    H5Aclose(attribute);
+    H5Sclose(space);
+    H5Tclose(type);
+    H5Gclose(group);
+  });
+  const std::string error = loadError(path);
+  EXPECT_NE(error.find("parameters/sensor"), std::string::npos) << error;
+  EXPECT_NE(error.find("'lidar'"), std::string::npos) << error;
 }
 
 TEST_F(ModelBundleFiles, RefusesAVersionTwoBundleWithoutBounds) {

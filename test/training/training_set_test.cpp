@@ -49,6 +49,21 @@ TEST_F(TrainingSetTest, IsReproducibleForASeedAndDiffersAcrossSeeds) {
   EXPECT_FALSE(a.descriptors.rows() == c.descriptors.rows() && a.descriptors == c.descriptors);
 }
 
+TEST_F(TrainingSetTest, TheSimulatedSensorRendersTheTrainingClouds) {
+  // Same seed, same poses (drawn before the noise): structured light loses edge pixels and
+  // shadows that the default Gaussian noise keeps.
+  const ViewSphere sphere(12);
+  ViewSimulation structured_light;
+  structured_light.sensor = DepthSensor::kStructuredLight;
+  const TrainingSet gaussian = generateTrainingSet(*renderer_, sphere, 1, {}, {}, 3);
+  const TrainingSet sl = generateTrainingSet(*renderer_, sphere, 1, structured_light, {}, 3);
+  ASSERT_EQ(gaussian.clouds.size(), sl.clouds.size());
+  for (std::size_t i = 0; i < sl.clouds.size(); ++i) {
+    EXPECT_TRUE(sl.clouds[i].camera_from_object.isApprox(gaussian.clouds[i].camera_from_object));
+    EXPECT_LT(sl.clouds[i].points, gaussian.clouds[i].points) << i;
+  }
+}
+
 TEST_F(TrainingSetTest, CloudsAreSeenFromInsideTheirDirectionsCell) {
   const ViewSphere sphere(42);
   ViewSimulation simulation;

@@ -37,6 +37,8 @@ struct EvaluationSettings {
   std::uint32_t seed = 1;  // of every random choice: object orientations, views, sensor noise
   double distance = 0.6;   // camera to object origin [m]
   bool noise = true;       // Kinect axial noise on every rendered view
+  // The depth camera imitated when noise is on (sensor_model.h).
+  DepthSensor sensor = DepthSensor::kKinectGaussian;
   // Random camera poses per sequence the planners choose from (>= views). The random planner
   // takes the first `views` of them in order, so every planner starts from the same first view
   // and sees the same candidates.

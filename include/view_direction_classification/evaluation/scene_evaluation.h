@@ -29,6 +29,7 @@ struct SceneEvaluationSettings {
   int scenes = 10;
   std::uint32_t seed = 1;  // scene s is generated with seed + s, its noise drawn from that too
   bool noise = true;
+  DepthSensor sensor = DepthSensor::kKinectGaussian;  // imitated when noise is on
   SceneGenerationSettings generation;  // its `views` is the number of views per scene
   SceneMetricSettings metrics;
   // The node's defaults: each instance's estimator is EstimatorParameters{}.

@@ -31,10 +31,12 @@ class DepthRenderer {
   explicit DepthRenderer(TriangleMesh mesh, CameraIntrinsics intrinsics = {});
 
   // Organised cloud (width x height, row-major, is_dense = false) in the camera's optical frame,
-  // one point per pixel that hits the mesh, NaN elsewhere. With noise enabled every depth gets
-  // axial Gaussian noise (the point moves along its pixel ray) drawn from *rng in row-major
-  // pixel order; a hit whose noisy depth falls before the near plane becomes NaN.
-  // Throws vdc::Error if noise is enabled without an rng.
+  // one point per pixel that hits the mesh, NaN elsewhere. With noise enabled and the default
+  // sensor every depth gets axial Gaussian noise (the point moves along its pixel ray) drawn
+  // from *rng in row-major pixel order; a hit whose noisy depth falls before the near plane
+  // becomes NaN. Another noise.sensor replaces that noise with its model (sensor_simulation.h;
+  // shadows render the mesh a second time, from the projector).
+  // Throws vdc::Error if noise is enabled without an rng, or for a bad sensor model.
   pcl::PointCloud<pcl::PointXYZ> render(const Eigen::Isometry3d& camera_from_object,
                                         const DepthNoiseModel& noise = {false},
                                         std::mt19937* rng = nullptr) const;
@@ -46,6 +48,15 @@ class DepthRenderer {
   const TriangleMesh& mesh() const { return mesh_; }
 
  private:
+  // The depth image `sensor` measures (0 = nothing), drawing its noise from rng.
+  std::vector<float> sensorDepth(const Eigen::Isometry3d& camera_from_object,
+                                 const SensorModel& sensor, std::mt19937& rng) const;
+  // All-NaN organised cloud of the image size.
+  pcl::PointCloud<pcl::PointXYZ> emptyCloud() const;
+  // The point at depth z on the ray of pixel (col, row).
+  void setPoint(int col, int row, double z, pcl::PointXYZ* point) const;
+  // Cloud of a depth image; depths before the near plane (and 0) become NaN.
+  pcl::PointCloud<pcl::PointXYZ> cloudOfDepth(const std::vector<float>& depth) const;
   // Fills inverse_depth (1/z per pixel, 0 = no hit).
   void rasterize(const Eigen::Isometry3d& camera_from_object,
                  std::vector<float>* inverse_depth) const;

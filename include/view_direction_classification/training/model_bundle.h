@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "view_direction_classification/geometry/sensor_model.h"
 #include "view_direction_classification/informativeness/informativeness.h"
 #include "view_direction_classification/learning/view_classifier.h"
 
@@ -20,6 +21,9 @@ struct TrainingParameters {
   std::uint32_t seed = 1;
   double distance = 0.6, distance_jitter = 0.1;
   bool noise = true;
+  // The depth camera simulated for training (sensor_model.h); bundles written before it was
+  // recorded trained with the default.
+  DepthSensor sensor = DepthSensor::kKinectGaussian;
   int image_width = 640, image_height = 480;
   double fx = 525, fy = 525, cx = 319.5, cy = 239.5;
   double keypoint_voxel = 0.004, normal_radius = 0.01, fpfh_radius = 0.03, support_voxel = 0.007;

@@ -6,10 +6,11 @@
 #include <cstdint>
 #include <vector>
 
+#include "view_direction_classification/common/progress.h"
+#include "view_direction_classification/features/fpfh_features.h"
 #include "view_direction_classification/geometry/camera.h"
 #include "view_direction_classification/geometry/depth_renderer.h"
-#include "view_direction_classification/features/fpfh_features.h"
-#include "view_direction_classification/common/progress.h"
+#include "view_direction_classification/geometry/sensor_model.h"
 #include "view_direction_classification/geometry/view_sphere.h"
 
 namespace vdc {
@@ -19,6 +20,8 @@ struct ViewSimulation {
   double distance = 0.6;         // camera to object origin [m]
   double distance_jitter = 0.1;  // relative: distance drawn uniformly in d (1 +/- jitter)
   bool noise = true;             // Kinect axial noise
+  // The depth camera imitated when noise is on (sensor_model.h).
+  DepthSensor sensor = DepthSensor::kKinectGaussian;
 };
 
 // One rendered training cloud, reduced to what training and scoring need.
