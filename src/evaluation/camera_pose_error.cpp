@@ -2,21 +2,13 @@
 
 #include <cmath>
 #include <random>
-#include <sstream>
 #include <string>
 
 #include "view_direction_classification/common/error.h"
+#include "view_direction_classification/common/number_text.h"
 
 namespace vdc {
 namespace {
-
-// A number as a message shows it: short, whatever its size (std::to_string writes 1e300 in
-// full).
-std::string shown(double value) {
-  std::ostringstream text;
-  text << value;
-  return text.str();
-}
 
 // Tags that keep these generators independent of the evaluation's others for the same seed.
 constexpr std::uint32_t kBiasStream = 0xb1a5u;
@@ -32,7 +24,7 @@ constexpr double kMaxShiftMm = 1000.0;
 void checkPart(double value, double largest, const std::string& name) {
   if (!std::isfinite(value) || value < 0.0 || value > largest) {
     throw Error("the camera pose error's " + name + " must be a number in [0, " +
-                std::to_string(static_cast<int>(largest)) + "], got " + shown(value));
+                std::to_string(static_cast<int>(largest)) + "], got " + numberText(value));
   }
 }
 

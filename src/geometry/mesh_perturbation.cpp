@@ -5,22 +5,14 @@
 #include <cmath>
 #include <map>
 #include <random>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "view_direction_classification/common/error.h"
+#include "view_direction_classification/common/number_text.h"
 
 namespace vdc {
 namespace {
-
-// A number as a message shows it: short, whatever its size (std::to_string writes 1e300 in
-// full).
-std::string shown(double value) {
-  std::ostringstream text;
-  text << value;
-  return text.str();
-}
 
 // The dent radius when none is given, as a fraction of the bounding-box diagonal: a dent of a
 // thumb's size on a mug.
@@ -122,20 +114,20 @@ bool MeshPerturbation::any() const {
 void checkMeshPerturbation(const MeshPerturbation& p) {
   for (int k = 0; k < 3; ++k) {
     if (!(p.scale(k) >= kSmallestScale && p.scale(k) <= kLargestScale)) {  // also NaN
-      throw Error("the mesh scale must be in [0.1, 10] on every axis, got " + shown(p.scale(k)) +
-                  " on axis " + std::to_string(k));
+      throw Error("the mesh scale must be in [0.1, 10] on every axis, got " +
+                  numberText(p.scale(k)) + " on axis " + std::to_string(k));
     }
   }
   if (p.dents < 0) {
     throw Error("the number of mesh dents must not be negative, got " + std::to_string(p.dents));
   }
   if (!std::isfinite(p.dent_depth) || p.dent_depth < 0.0) {
-    throw Error("the mesh dents' depth must be a finite number >= 0, got " + shown(p.dent_depth) +
-                " m");
+    throw Error("the mesh dents' depth must be a finite number >= 0, got " +
+                numberText(p.dent_depth) + " m");
   }
   if (!std::isfinite(p.dent_radius) || p.dent_radius < 0.0) {
-    throw Error("the mesh dents' radius must be a finite number >= 0, got " + shown(p.dent_radius) +
-                " m");
+    throw Error("the mesh dents' radius must be a finite number >= 0, got " +
+                numberText(p.dent_radius) + " m");
   }
 }
 

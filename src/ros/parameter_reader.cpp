@@ -5,19 +5,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
+
+#include "view_direction_classification/common/number_text.h"
 
 namespace vdc {
 namespace {
 
 std::string withNote(std::string words, const std::string& note) {
   return note.empty() ? words : words + " (" + note + ")";
-}
-
-std::string formatNumber(double value) {
-  std::ostringstream text;
-  text << value;
-  return text.str();
 }
 
 // "a string ('abc')", "an integer (3)", ... for the type error's "got ...".
@@ -31,7 +26,7 @@ std::string describeXmlRpc(XmlRpc::XmlRpcValue& value) {
       // 3.0, not 3: where an integer is expected, the message must show why 3.0 is not one.
       const double number = static_cast<double>(value);
       const bool integral = std::isfinite(number) && number == std::floor(number);
-      return "a number (" + formatNumber(number) + (integral ? ".0" : "") + ")";
+      return "a number (" + numberText(number) + (integral ? ".0" : "") + ")";
     }
     case XmlRpc::XmlRpcValue::TypeString:
       return "a string (" + describeParameterValue(static_cast<std::string>(value)) + ")";
@@ -91,18 +86,18 @@ ParameterRule<double> finiteNumber(const std::string& note) {
 }
 
 ParameterRule<double> numberAtLeast(double minimum, const std::string& note) {
-  return {withNote("a finite number >= " + formatNumber(minimum), note),
+  return {withNote("a finite number >= " + numberText(minimum), note),
           [minimum](double value) { return std::isfinite(value) && value >= minimum; }};
 }
 
 ParameterRule<double> numberAbove(double minimum, const std::string& note) {
-  return {withNote("a finite number > " + formatNumber(minimum), note),
+  return {withNote("a finite number > " + numberText(minimum), note),
           [minimum](double value) { return std::isfinite(value) && value > minimum; }};
 }
 
 ParameterRule<double> numberIn(double minimum, double maximum, bool include_maximum,
                                const std::string& note) {
-  return {withNote("a number in [" + formatNumber(minimum) + ", " + formatNumber(maximum) +
+  return {withNote("a number in [" + numberText(minimum) + ", " + numberText(maximum) +
                        (include_maximum ? "]" : ")"),
                    note),
           [=](double value) {
@@ -132,13 +127,13 @@ ParameterRule<std::vector<double>> finiteGroupsOf(std::size_t group, const std::
 
 std::string describeParameterValue(bool value) { return value ? "true" : "false"; }
 std::string describeParameterValue(int value) { return std::to_string(value); }
-std::string describeParameterValue(double value) { return formatNumber(value); }
+std::string describeParameterValue(double value) { return numberText(value); }
 std::string describeParameterValue(const std::string& value) { return "'" + value + "'"; }
 
 std::string describeParameterValue(const std::vector<double>& values) {
   std::string text = "[";
   for (std::size_t i = 0; i < values.size(); ++i) {
-    text += (i == 0 ? "" : ", ") + formatNumber(values[i]);
+    text += (i == 0 ? "" : ", ") + numberText(values[i]);
   }
   return text + "]";
 }
