@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "view_direction_classification/geometry/point_spread.h"
+
 namespace vdc {
 namespace {
 
@@ -19,14 +21,25 @@ constexpr std::size_t kMaxPoints = 2000;
 // Faces and axes within this of upright (or horizontal) count: a box on a table stands square.
 constexpr double kTiltTolerance = 10.0 * M_PI / 180.0;
 constexpr int kRansacIterations = 300;
+// The shapes are fitted in centimetres: PCL's samplers refuse three points whose cross product
+// is under 1e-5 (float precision, meant for metres), and a candidate's points a few millimetres
+// apart failed most samples, each with an error line (hundreds per patrol pass). Scaled, the same
+// samples pass; the fractions are scale-free.
+constexpr float kFitScale = 100.0f;
+// [fit units: cm] Points left for a face or a side that spread less than this across their main
+// direction (a line of them, a few) are not fitted: no shape's part, and RANSAC on them drew
+// only degenerate samples.
+constexpr double kMinFitSpread = 0.1;
 
 using Cloud = pcl::PointCloud<pcl::PointXYZ>;
 
-// The finite points, evenly strided down to at most kMaxPoints.
+// The finite points, evenly strided down to at most kMaxPoints, scaled by kFitScale.
 Cloud::Ptr strided(const Cloud& points) {
   Cloud finite;
   for (const auto& p : points.points) {
-    if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) finite.push_back(p);
+    if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) {
+      finite.push_back(pcl::PointXYZ(kFitScale * p.x, kFitScale * p.y, kFitScale * p.z));
+    }
   }
   auto result = pcl::make_shared<Cloud>();
   const std::size_t stride =
@@ -51,7 +64,7 @@ Eigen::Vector3f explainByPlane(const Cloud::Ptr& cloud, int model, const Eigen::
   for (std::size_t i = 0; i < cloud->size(); ++i) {
     if (!(*explained)[i]) remaining->push_back(static_cast<int>(i));
   }
-  if (static_cast<int>(remaining->size()) < 3) return Eigen::Vector3f::Zero();
+  if (!spreadsInTwoDirections(*cloud, *remaining, kMinFitSpread)) return Eigen::Vector3f::Zero();
   pcl::SACSegmentation<pcl::PointXYZ> ransac;  // seeded with a constant: deterministic
   ransac.setModelType(model);
   ransac.setMethodType(pcl::SAC_RANSAC);
@@ -136,13 +149,15 @@ double cylinderFraction(const Cloud::Ptr& cloud, const Eigen::Vector3f& up, doub
     flat->push_back(pcl::PointXYZ(u.dot(p), v.dot(p), 0.0f));
     if (!explained[i]) side->push_back(static_cast<int>(i));
   }
-  if (side->size() < 3) return fractionOf(explained);
+  if (side->size() < 3 || !spreadsInTwoDirections(*flat, *side, kMinFitSpread)) {
+    return fractionOf(explained);
+  }
   pcl::SACSegmentation<pcl::PointXYZ> ransac;
   ransac.setModelType(pcl::SACMODEL_CIRCLE2D);
   ransac.setMethodType(pcl::SAC_RANSAC);
   ransac.setDistanceThreshold(tolerance);
   ransac.setMaxIterations(kRansacIterations);
-  ransac.setRadiusLimits(0.005, 0.5);
+  ransac.setRadiusLimits(0.005 * kFitScale, 0.5 * kFitScale);
   ransac.setInputCloud(flat);
   ransac.setIndices(side);
   pcl::PointIndices inliers;
@@ -208,8 +223,9 @@ double simpleShapeFraction(const pcl::PointCloud<pcl::PointXYZ>& points, const E
   const Cloud::Ptr cloud = strided(points);
   if (static_cast<int>(cloud->size()) < kMinPoints) return 0.0;
   const Eigen::Vector3f unit_up = up.normalized();
-  return std::max(boxFraction(cloud, unit_up, tolerance),
-                  cylinderFraction(cloud, unit_up, tolerance));
+  const double fit_tolerance = kFitScale * tolerance;
+  return std::max(boxFraction(cloud, unit_up, fit_tolerance),
+                  cylinderFraction(cloud, unit_up, fit_tolerance));
 }
 
 bool isSimpleShape(const std::vector<Eigen::Vector3f>& surface_points, double tolerance,
