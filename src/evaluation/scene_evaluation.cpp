@@ -6,7 +6,6 @@
 #include <utility>
 
 #include "view_direction_classification/common/error.h"
-#include "view_direction_classification/common/quaternion.h"
 #include "view_direction_classification/training/model_training.h"
 
 namespace vdc {
@@ -102,13 +101,11 @@ const char* falseIdentificationKindName(FalseIdentificationKind kind) {
 std::vector<InstanceEstimate> confirmedEstimates(const SceneEstimator& estimator) {
   std::vector<InstanceEstimate> estimates;
   for (const ObjectInstance& instance : estimator.instances()) {
-    const auto position = instance.estimator->positionEstimate();
-    if (!estimator.confirmed(instance) || !position) continue;
+    const std::optional<Eigen::Isometry3d> pose = believedPose(*instance.estimator);
+    if (!estimator.confirmed(instance) || !pose) continue;
     InstanceEstimate estimate;
     estimate.model = estimator.library().models()[instance.model].name;
-    estimate.world_from_object.linear() =
-        quaternionToRotationMatrix(instance.estimator->mapOrientation());
-    estimate.world_from_object.translation() = *position;
+    estimate.world_from_object = *pose;
     estimate.cone90_deg = instance.estimator->spread().cone90 * 180.0 / M_PI;
     estimate.identity_probability = instance.identity_probability;
     estimates.push_back(estimate);

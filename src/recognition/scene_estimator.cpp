@@ -8,7 +8,6 @@
 #include <utility>
 
 #include "view_direction_classification/common/error.h"
-#include "view_direction_classification/common/quaternion.h"
 #include "view_direction_classification/estimation/verification_scene.h"
 #include "view_direction_classification/recognition/instance_association.h"
 
@@ -288,12 +287,9 @@ void SceneEstimator::associate(std::vector<FrameCandidate>& candidates,
 int SceneEstimator::explainingInstance(const FrameCandidate& candidate) const {
   for (std::size_t i = 0; i < instances_.size(); ++i) {
     const ObjectInstance& instance = instances_[i];
-    const auto position = instance.estimator->positionEstimate();
-    if (!position) continue;
-    Eigen::Isometry3d world_from_object = Eigen::Isometry3d::Identity();
-    world_from_object.linear() = quaternionToRotationMatrix(instance.estimator->mapOrientation());
-    world_from_object.translation() = *position;
-    if (explanations_[instance.model]->explainedFraction(candidate.points_world, world_from_object,
+    const std::optional<Eigen::Isometry3d> world_from_object = believedPose(*instance.estimator);
+    if (!world_from_object) continue;
+    if (explanations_[instance.model]->explainedFraction(candidate.points_world, *world_from_object,
                                                          parameters_.part_tolerance) >=
         parameters_.min_explained_fraction) {
       return static_cast<int>(i);

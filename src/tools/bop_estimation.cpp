@@ -4,7 +4,7 @@
 #include <chrono>
 
 #include "view_direction_classification/bop/bop_units.h"
-#include "view_direction_classification/common/quaternion.h"
+#include "view_direction_classification/recognition/instance_overlap.h"
 #include "view_direction_classification/training/model_bundle.h"
 
 namespace vdc::tools {
@@ -12,13 +12,6 @@ namespace {
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-Eigen::Isometry3d worldFromObject(const ObjectInstance& instance) {
-  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-  pose.linear() = quaternionToRotationMatrix(instance.estimator->mapOrientation());
-  pose.translation() = *instance.estimator->positionEstimate();
-  return pose;
 }
 
 // The estimator's confirmed instances of each target's object, most probable first.
@@ -47,7 +40,8 @@ std::vector<BopEstimate> estimatesOf(const SceneEstimator& estimator,
       estimate.im_id = target.im_id;
       estimate.obj_id = target.obj_id;
       estimate.score = instance->identity_probability;
-      estimate.camera_from_model = bopPoseOf(camera_from_world * worldFromObject(*instance));
+      estimate.camera_from_model =
+          bopPoseOf(camera_from_world * *believedPose(*instance->estimator));
       estimate.time_s = time_s;
       estimates.push_back(estimate);
     }
