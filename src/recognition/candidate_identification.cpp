@@ -29,9 +29,16 @@ void checkIdentificationParameters(const IdentificationParameters& p) {
     throw Error("identification min_probability must be in [0, 1], got " +
                 std::to_string(p.min_probability));
   }
-  if (!(p.drop_probability >= 0.0 && p.drop_probability <= p.min_probability)) {
-    throw Error("identification drop_probability must be in [0, min_probability], got " +
-                std::to_string(p.drop_probability));
+  if (!(p.track_probability >= 0.0 && p.track_probability <= 1.0)) {
+    throw Error("identification track_probability must be in [0, 1], got " +
+                std::to_string(p.track_probability));
+  }
+  if (!(p.drop_probability >= 0.0 &&
+        p.drop_probability <= std::min(p.min_probability, p.track_probability))) {
+    throw Error(
+        "identification drop_probability must be in [0, min(min_probability, "
+        "track_probability)], got " +
+        std::to_string(p.drop_probability));
   }
   if (!(p.max_view_evidence > 0.0) || !std::isfinite(p.max_view_evidence)) {
     throw Error("identification max_view_evidence must be a finite number > 0, got " +
@@ -152,7 +159,7 @@ Identification identifyCandidate(
     result.reason = "no model of the library fits its size";
   } else if (index == library.size()) {
     result.reason = "no model explains it better than unknown";
-  } else if (*best < parameters.min_probability) {
+  } else if (*best < std::min(parameters.track_probability, parameters.min_probability)) {
     result.reason = "no model is probable enough";
   } else {
     result.model = index;

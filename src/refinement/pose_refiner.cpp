@@ -19,14 +19,15 @@
 #include "counted_voxels.h"
 #include "fit_covariance.h"
 #include "icp_alignment.h"
-#include "view_direction_classification/common/parallel_for.h"
 #include "roll_sector.h"
 #include "start_screening.h"
 #include "turned_starts.h"
 #include "view_direction_classification/common/error.h"
+#include "view_direction_classification/common/parallel_for.h"
 #include "view_direction_classification/common/quaternion.h"
 #include "view_direction_classification/common/rotation_error.h"
 #include "view_direction_classification/geometry/measured_point.h"
+#include "visible_part.h"
 
 namespace vdc {
 
@@ -78,6 +79,14 @@ void checkParameters(const RefinementParameters& p) {
   }
   if (p.min_points < 3) {
     throw Error("refinement's min_points must be at least 3, got " + std::to_string(p.min_points));
+  }
+  if (p.piece_placements < 0) {
+    throw Error("refinement's piece_placements must be >= 0, got " +
+                std::to_string(p.piece_placements));
+  }
+  if (!(p.piece_spread_ratio >= 0.0) || !std::isfinite(p.piece_spread_ratio)) {
+    throw Error("refinement's piece_spread_ratio must be a finite number >= 0, got " +
+                std::to_string(p.piece_spread_ratio));
   }
   if (p.screening_points < 1) {
     throw Error("refinement's screening_points must be at least 1, got " +
@@ -216,66 +225,26 @@ pcl::PointCloud<pcl::PointNormal>::Ptr icpSource(const pcl::PointCloud<pcl::Poin
   return source;
 }
 
-// The centroid (object frame) of the samples a camera at `camera` (object frame) sees: a z-buffer
-// of the samples over angular cells about two sample spacings wide, nearest sample per cell.
-Eigen::Vector3d visibleCentroid(const ModelSurface& surface, const Eigen::Vector3d& camera) {
-  const Eigen::Vector3d forward = -camera.normalized();
-  const Eigen::Vector3d side = forward.unitOrthogonal();
-  const Eigen::Vector3d up = forward.cross(side);
-  const double cell = 2.0 * surface.spacing() / camera.norm();
-  std::unordered_map<std::uint64_t, std::pair<double, Eigen::Vector3d>> nearest;
-  for (const auto& sample : surface.cloud()->points) {
-    const Eigen::Vector3d s = sample.getVector3fMap().cast<double>();
-    const Eigen::Vector3d ray = s - camera;
-    const double depth = ray.dot(forward);
-    if (depth <= 0.0 || sample.getNormalVector3fMap().cast<double>().dot(ray) >= 0.0) continue;
-    const auto u = static_cast<std::int64_t>(std::floor(ray.dot(side) / depth / cell));
-    const auto v = static_cast<std::int64_t>(std::floor(ray.dot(up) / depth / cell));
-    // Unsigned: shifting a negative cell index left is undefined behaviour before C++20.
-    const std::uint64_t key =
-        (static_cast<std::uint64_t>(u) << 32) ^ (static_cast<std::uint64_t>(v) & 0xffffffffu);
-    auto [it, inserted] = nearest.try_emplace(key, depth, s);
-    if (!inserted && depth < it->second.first) it->second = {depth, s};
-  }
-  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  for (const auto& [key, hit] : nearest) sum += hit.second;
-  return nearest.empty() ? sum : Eigen::Vector3d(sum / nearest.size());
-}
-
-// visibleCentroid() remembered per camera position: the starts along a girdle differ by a roll
-// about the line of sight, which leaves the camera (nearly) where it was in the object frame, so
-// a girdle's starts share one z-buffer instead of each paying for its own.
-class VisibleCentroids {
- public:
-  explicit VisibleCentroids(const ModelSurface& surface) : surface_(surface) {}
-  Eigen::Vector3d operator()(const Eigen::Vector3d& camera) {
-    for (const auto& [known, centroid] : known_) {
-      // 1 % of the distance: the visible part shifts by far less than ICP's reach.
-      if ((known - camera).norm() < 0.01 * camera.norm()) return centroid;
-    }
-    known_.emplace_back(camera, visibleCentroid(surface_, camera));
-    return known_.back().second;
-  }
-
- private:
-  const ModelSurface& surface_;
-  std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> known_;
-};
-
-// The pose of orientation q that puts the centroid of the model's part the first camera sees
-// (from where the position estimate is) onto the observed centroid. The estimator's position
-// comes from the MAP's centroid offset; for another roll the visible part, and so the offset,
-// differ by up to the object's size, more than ICP's correspondence distance.
-Eigen::Isometry3d placedHypothesis(const Eigen::Vector4d& q, const Eigen::Vector3d& position,
-                                   const Eigen::Vector3d& observed_centroid,
-                                   const Eigen::Vector3d& camera_position,
-                                   VisibleCentroids* visible) {
+// The poses of orientation q that put the centroid of the model's part the first camera sees
+// (from where the position estimate is), and for a piece the centroids of patches of that part
+// (visible_part.h), onto the observed centroid. The estimator's position comes from the MAP's
+// centroid offset; for another roll the visible part, and so the offset, differ by up to the
+// object's size, more than ICP's correspondence distance.
+std::vector<Eigen::Isometry3d> placedHypotheses(const Eigen::Vector4d& q,
+                                                const Eigen::Vector3d& position,
+                                                const Eigen::Vector3d& observed_centroid,
+                                                const Eigen::Vector3d& camera_position,
+                                                VisibleParts* visible) {
   const Eigen::Matrix3d rotation = quaternionToRotationMatrix(q);
   const Eigen::Vector3d camera = rotation.transpose() * (camera_position - position);
-  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-  pose.linear() = rotation;
-  pose.translation() = observed_centroid - rotation * (*visible)(camera);
-  return pose;
+  std::vector<Eigen::Isometry3d> poses;
+  for (const Eigen::Vector3d& anchor : visible->anchors(camera)) {
+    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+    pose.linear() = rotation;
+    pose.translation() = observed_centroid - rotation * anchor;
+    poses.push_back(pose);
+  }
+  return poses;
 }
 
 Eigen::Vector4d orientationOf(const Eigen::Isometry3d& pose) {
@@ -291,21 +260,26 @@ std::vector<RefinedPose> placedStarts(const BinghamMixture& belief, const Eigen:
                                       const ModelSurface& surface,
                                       const pcl::PointCloud<pcl::PointXYZ>& screening_points,
                                       const RefinementParameters& parameters) {
-  VisibleCentroids visible(surface);
+  std::vector<Eigen::Vector3d> observed;
+  for (const auto& p : screening_points) observed.push_back(p.getVector3fMap().cast<double>());
+  VisibleParts visible(surface, rmsRadius(observed), parameters.piece_spread_ratio,
+                       parameters.piece_placements);
   std::vector<RefinedPose> starts;
   for (const OrientationStart& start : orientationHypotheses(belief, parameters.hypotheses)) {
     RefinedPose pose;
     pose.start_orientation =
         start.orientation(0) < 0 ? Eigen::Vector4d(-start.orientation) : start.orientation;
     pose.component = start.component;
-    pose.start = placedHypothesis(pose.start_orientation, position, observed_centroid,
-                                  camera_position, &visible);
-    pose.world_from_object = pose.start;
     pose.orientation = pose.start_orientation;
     pose.rejection = std::string("screened out: its start fits worse than ") +
                      (parameters.screen_per_component ? "its component's " : "the ") +
                      std::to_string(parameters.max_refined) + " best";
-    starts.push_back(pose);
+    for (const Eigen::Isometry3d& placed : placedHypotheses(
+             pose.start_orientation, position, observed_centroid, camera_position, &visible)) {
+      pose.start = placed;
+      pose.world_from_object = placed;
+      starts.push_back(pose);
+    }
   }
   // A first view's two girdles place dozens of starts; each screening is a batched search.
   parallelFor(starts.size(), parameters.threads, [&](int, std::size_t i) {

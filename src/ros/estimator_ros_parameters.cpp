@@ -72,6 +72,8 @@ ParameterTable<EstimatorRosParameters> makeTable() {
                                  [](double value) { return value > 0.0 && value <= 180.0; }})
       .add("refinement_max_refined", refinement(&R::max_refined),
            integerAtLeast(0, "0: every start"))
+      .add("refinement_piece_placements", refinement(&R::piece_placements),
+           integerAtLeast(0, "0: at the visible part's centroid only"))
       .add("refinement_min_score", refinement(&R::min_score), numberIn(-1.0, 1.0, true))
       .add("refinement_restart_seeds", refinement(&R::restart_seeds),
            integerAtLeast(0, "0: no restarts"))

@@ -44,6 +44,8 @@ ParameterTable<SceneRosParameters> makeTable() {
            integerAtLeast(0, "0: no new instances"))
       .add("identity_min_probability", identification(&IdentificationParameters::min_probability),
            numberIn(0.0, 1.0, true))
+      .add("identity_track_probability",
+           identification(&IdentificationParameters::track_probability), numberIn(0.0, 1.0, true))
       .add("identity_drop_probability", identification(&IdentificationParameters::drop_probability),
            numberIn(0.0, 1.0, true))
       .add("identity_unknown_score", identification(&IdentificationParameters::unknown_score),

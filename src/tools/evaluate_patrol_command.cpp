@@ -18,6 +18,7 @@
 #include "patrol_evaluation_csv.h"
 #include "patrol_evaluation_summary.h"
 #include "progress_bar.h"
+#include "identity_options.h"
 #include "scene_evaluation_options.h"
 #include "view_direction_classification/common/error.h"
 
@@ -129,6 +130,7 @@ void addEvaluatePatrolCommand(CLI::App& app) {
   command->add_option("--max-move", s.changes.max_move, "[m] farthest a moved object goes")
       ->capture_default_str()
       ->check(CLI::Range(0.03, 1.0));
+  addIdentityOptions(*command, &s.estimator.identification);
   command->callback([options] { runEvaluatePatrol(*options); });
 }
 

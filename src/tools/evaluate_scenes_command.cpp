@@ -17,6 +17,7 @@
 #include "commands.h"
 #include "progress_bar.h"
 #include "scene_evaluation_csv.h"
+#include "identity_options.h"
 #include "scene_evaluation_options.h"
 #include "scene_evaluation_summary.h"
 #include "sensor_option.h"
@@ -108,18 +109,8 @@ void addEvaluateScenesCommand(CLI::App& app) {
   command->add_flag("--no-noise", options->no_noise, "render the views without depth noise");
   addSensorOption(*command, &options->sensor);
   // The scene estimator's identity settings and the instances' refinement views: the node's
-  // identity_unknown_score, identity_min_probability and refinement_views.
-  IdentificationParameters& identity = s.estimator.identification;
-  command
-      ->add_option("--unknown-score", identity.unknown_score,
-                   "verification score of \"unknown\" (identity_unknown_score)")
-      ->capture_default_str()
-      ->check(CLI::Range(-1.0, 1.0));
-  command
-      ->add_option("--min-probability", identity.min_probability,
-                   "identity probability from which an instance is reported")
-      ->capture_default_str()
-      ->check(CLI::Range(0.0, 1.0));
+  // identity_* parameters and refinement_views.
+  addIdentityOptions(*command, &s.estimator.identification);
   command
       ->add_option("--refinement-views", s.estimator.instance.refinement_views,
                    "views each instance's refinement aligns and verifies together")

@@ -298,6 +298,30 @@ TEST(SceneEstimatorLabels, WithoutLabelModelsEveryFittingModelIsTried) {
   }
 }
 
+// A candidate whose most probable model reaches track_probability but not min_probability is a
+// tentative instance: it fuses the next views, but it is not reported until they confirm it.
+TEST(SceneEstimatorLabels, AnInstanceBelowMinProbabilityIsTrackedButNotReported) {
+  SceneEstimatorParameters parameters;
+  parameters.identification.track_probability = 0.3;  // below the tied names' ~0.45
+  SceneEstimator estimator(twoNamesOfTheMug(), parameters);
+  const SceneUpdate update = updateFromLabels(estimator, parameters);
+  ASSERT_EQ(estimator.instances().size(), 2u) << describe(estimator, update);
+  for (const ObjectInstance& instance : estimator.instances()) {
+    EXPECT_LT(instance.identity_probability, parameters.identification.min_probability);
+    EXPECT_FALSE(estimator.identified(instance)) << describe(estimator, update);
+    EXPECT_FALSE(estimator.confirmed(instance)) << describe(estimator, update);
+  }
+}
+
+TEST(IdentificationParameters, TrackProbabilityIsCheckedAgainstTheDropProbability) {
+  IdentificationParameters bad;
+  bad.track_probability = 1.5;
+  EXPECT_THROW(checkIdentificationParameters(bad), Error);
+  bad = {};
+  bad.track_probability = 0.1;  // below drop_probability (0.2): a new instance would be dropped
+  EXPECT_THROW(checkIdentificationParameters(bad), Error);
+}
+
 TEST(SceneEstimatorLabels, ALabelModelNamingNoModelOfTheLibraryIsAStartUpError) {
   SceneEstimatorParameters parameters;
   parameters.label_models = {{1, "mug"}, {41, "bowl"}};

@@ -134,6 +134,21 @@ class PoseRefinerTest : public ::testing::Test {
         DepthRenderer(mesh).render(camera_from_mesh, DepthNoiseModel{true}, &rng));
     return result;
   }
+  // The view's points within 5 cm of the handle's tip, as if the rest of the mug were hidden or
+  // cut off.
+  pcl::PointCloud<pcl::PointXYZ>::Ptr aroundTheHandle(const RefinementView& v) const {
+    Eigen::Vector3f tip(-1e9f, 0.0f, 0.0f);
+    for (const Eigen::Vector3f& vertex : mesh_->vertices) {
+      if (vertex.x() > tip.x()) tip = vertex;
+    }
+    const Eigen::Isometry3f object_from_camera =
+        (world_from_object_.inverse() * v.world_from_camera).cast<float>();
+    auto patch = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+    for (const auto& p : v.points->points) {
+      if ((object_from_camera * p.getVector3fMap() - tip).norm() < 0.05f) patch->push_back(p);
+    }
+    return patch;
+  }
   Eigen::Vector4d truth() const { return orientationOf(world_from_object_); }
 
   Eigen::Vector3d position() const { return world_from_object_.translation(); }
@@ -488,16 +503,7 @@ TEST_F(PoseRefinerTest, AViewCroppedToThePatchAroundTheHandleStillVerifiesTheTru
   // hidden behind something the segmentation removed. The rest of the true pose's predicted
   // surface lies outside the view's footprint, where nothing observed is no contradiction.
   RefinementView v = view(kHandleSideOn, 0.7);
-  Eigen::Vector3f tip(-1e9f, 0.0f, 0.0f);
-  for (const Eigen::Vector3f& vertex : mesh_->vertices) {
-    if (vertex.x() > tip.x()) tip = vertex;
-  }
-  const Eigen::Isometry3f object_from_camera =
-      (world_from_object_.inverse() * v.world_from_camera).cast<float>();
-  auto patch = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
-  for (const auto& p : v.points->points) {
-    if ((object_from_camera * p.getVector3fMap() - tip).norm() < 0.05f) patch->push_back(p);
-  }
+  const pcl::PointCloud<pcl::PointXYZ>::Ptr patch = aroundTheHandle(v);
   ASSERT_GT(patch->size(), 200u);
   ASSERT_LT(patch->size(), v.points->size() / 2);
   v.points = patch;
@@ -514,6 +520,36 @@ TEST_F(PoseRefinerTest, AViewCroppedToThePatchAroundTheHandleStillVerifiesTheTru
   everywhere.judge_only_within_footprint = false;
   const PoseVerifier everywhere_verifier(*surface_, {v}, everywhere);
   EXPECT_LT(everywhere_verifier.score(world_from_object_).score(), 0.5);
+}
+
+// A piece's centroid is not the centroid of what the camera sees of the whole object: placed by
+// that, the start lies several centimetres off, beyond ICP's reach. Placed also on patches of
+// the visible part, the piece is found.
+TEST_F(PoseRefinerTest, APieceAroundTheHandleIsFoundFromPlacementsOnPatchesOfTheVisiblePart) {
+  RefinementView v = view(kHandleSideOn, 0.7);
+  const pcl::PointCloud<pcl::PointXYZ>::Ptr piece = aroundTheHandle(v);
+  ASSERT_LT(piece->size(), v.points->size() / 2);
+  v.points = piece;
+  const BinghamMixture belief({1.0}, {concentratedAt(truth())});
+  const auto error_mm = [&](const RefinedPose& pose) {
+    return 1000.0 * (pose.world_from_object.translation() - position()).norm();
+  };
+
+  RefinementParameters centroid_only;
+  centroid_only.piece_placements = 0;
+  const RefinementResult at_centroid =
+      PoseRefiner(*surface_, centroid_only).refine(belief, position(), {v});
+  ASSERT_FALSE(at_centroid.skipped()) << at_centroid.skip_reason;
+  for (const RefinedPose& pose : at_centroid.kept) {
+    EXPECT_GT(error_mm(pose), 10.0) << describe(at_centroid, truth());
+  }
+
+  const RefinementResult on_patches = PoseRefiner(*surface_).refine(belief, position(), {v});
+  ASSERT_FALSE(on_patches.kept.empty()) << describe(on_patches, truth());
+  EXPECT_GT(on_patches.tried.size(), at_centroid.tried.size());
+  const RefinedPose& best = on_patches.kept.front();
+  EXPECT_LT(rotationErrorDeg(best.orientation, truth()), 3.0) << describe(on_patches, truth());
+  EXPECT_LT(error_mm(best), 3.0) << describe(on_patches, truth());
 }
 
 TEST_F(PoseRefinerTest, AnObjectHiddenBehindABarKeepsItsTruePoseAgainstTheWholeScene) {

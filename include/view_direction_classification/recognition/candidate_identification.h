@@ -26,8 +26,15 @@ struct IdentificationParameters {
   // better score e times as likely.
   double unknown_score = 0.8;
   double temperature = 0.05;
-  // The candidate is the most probable model when its probability reaches this, else unknown.
-  double min_probability = 0.5;
+  // An instance is reported (identified) while its identity probability is at least
+  // min_probability. A candidate becomes an instance already when its most probable model reaches
+  // track_probability (or min_probability, if that is lower), else it is unknown: a tentative
+  // instance fuses the next views, whose evidence (identityEvidence) confirms it or drops it. One
+  // view of a small piece can make a wrong model about as probable as a right one on a whole
+  // object (0.5-0.85 against 0.9-0.98 in the scene evaluation, doc/evaluation.md), and the next
+  // views tell them apart.
+  double min_probability = 0.8;
+  double track_probability = 0.5;
   // After identification each fused view of an instance adds its evidence (identityEvidence);
   // an instance whose probability falls below this is dropped: one view can make a box look
   // like a mug's side, the next ones do not.

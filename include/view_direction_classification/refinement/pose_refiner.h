@@ -32,6 +32,12 @@ struct RefinementParameters {
   // equally likely girdles, where per component would align dozens).
   bool screen_per_component = true;
   int screening_points = 200;
+  // A piece of an object (its observed points spread less than piece_spread_ratio of the model's
+  // visible part, by RMS radius: cut off at a concave edge, or the rest hidden) is also placed
+  // with its centroid at up to piece_placements patches of the visible part, each screened as a
+  // start of its own (0: at the visible part's centroid only).
+  int piece_placements = 4;
+  double piece_spread_ratio = 0.9;
   // An observation whose bounding box diagonal exceeds this many model diagonals is not (only)
   // the object: skipped.
   double max_extent_ratio = 2.0;
