@@ -15,10 +15,10 @@
 #include <vector>
 
 #include "commands.h"
+#include "identity_options.h"
 #include "patrol_evaluation_csv.h"
 #include "patrol_evaluation_summary.h"
 #include "progress_bar.h"
-#include "identity_options.h"
 #include "scene_evaluation_options.h"
 #include "view_direction_classification/common/error.h"
 

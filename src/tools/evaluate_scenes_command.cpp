@@ -15,9 +15,9 @@
 #include <vector>
 
 #include "commands.h"
+#include "identity_options.h"
 #include "progress_bar.h"
 #include "scene_evaluation_csv.h"
-#include "identity_options.h"
 #include "scene_evaluation_options.h"
 #include "scene_evaluation_summary.h"
 #include "sensor_option.h"
