@@ -21,6 +21,7 @@
 #include "bop_options.h"
 #include "bop_summary.h"
 #include "commands.h"
+#include "identity_options.h"
 #include "progress_bar.h"
 #include "view_direction_classification/bop/bop_units.h"
 #include "view_direction_classification/common/error.h"
@@ -179,6 +180,7 @@ void addEvaluateBopCommand(CLI::App& app) {
       ->check(CLI::Range(0, 1000000));
   command->add_flag("--no-fusion", options->no_fusion,
                     "skip the view sequences (single images only)");
+  addIdentityOptions(*command, &options->estimator.identification);
   command->callback([options] { runEvaluateBop(*options); });
 }
 
