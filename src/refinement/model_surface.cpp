@@ -7,6 +7,7 @@
 #include <string>
 #include <utility>
 
+#include "distance_field.h"
 #include "view_direction_classification/common/error.h"
 
 namespace vdc {
@@ -104,4 +105,19 @@ ModelSurface::ModelSurface(const std::vector<Eigen::Vector3f>& points,
   nearest_ = std::make_unique<const NearestPoints>(std::move(samples), std::move(sample_normals));
   symmetry_axes_ = nearSymmetryAxes(*cloud_);
 }
+const TruncatedDistanceField& ModelSurface::distanceField(double truncation) const {
+  const std::lock_guard<std::mutex> lock(fields_mutex_);
+  for (const auto& field : fields_) {
+    if (field->truncation() == truncation) return *field;
+  }
+  std::vector<Eigen::Vector3f> samples;
+  samples.reserve(cloud_->size());
+  for (const auto& point : cloud_->points) samples.push_back(point.getVector3fMap());
+  // Half the samples' spacing: the interpolation's error stays well below the screening's
+  // millimetres; at least 2 mm, which bounds the grid (a 25 cm object: 5 MB).
+  fields_.push_back(std::make_shared<const TruncatedDistanceField>(
+      samples, bounds_, truncation, std::max(0.002, 0.5 * spacing_)));
+  return *fields_.back();
+}
+
 }  // namespace vdc

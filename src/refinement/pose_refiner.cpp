@@ -20,6 +20,7 @@
 #include "fit_covariance.h"
 #include "icp_alignment.h"
 #include "roll_sector.h"
+#include "shared_surfaces.h"
 #include "start_screening.h"
 #include "turned_starts.h"
 #include "view_direction_classification/common/error.h"
@@ -616,17 +617,12 @@ PoseRefiner::PoseRefiner(std::shared_ptr<const ModelSurface> surface,
 }
 
 PoseRefiner::PoseRefiner(const ModelBundle& model, RefinementParameters parameters)
-    : PoseRefiner(std::make_shared<const ModelSurface>(
-                      model.surface_points, model.surface_normals, model.bounds,
-                      model.parameters.surface_spacing, parameters.model_spacing),
-                  parameters) {
+    : PoseRefiner(sharedModelSurface(model, parameters.model_spacing), parameters) {
   // The bundle's samples at polish_model_spacing (its own spacing, 2 mm by default, when that is
   // coarser): the polish's target. Without a polish, or at the same spacing, it is surface_.
   if (parameters_.polish_iterations > 0 &&
       parameters_.polish_model_spacing != parameters_.model_spacing) {
-    polish_surface_ = std::make_shared<const ModelSurface>(
-        model.surface_points, model.surface_normals, model.bounds, model.parameters.surface_spacing,
-        parameters_.polish_model_spacing);
+    polish_surface_ = sharedModelSurface(model, parameters_.polish_model_spacing);
   }
 }
 

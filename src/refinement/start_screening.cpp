@@ -1,5 +1,7 @@
 #include "start_screening.h"
 
+#include "distance_field.h"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -23,13 +25,11 @@ double meanTruncatedDistance(const ModelSurface& surface,
                              const Eigen::Isometry3d& world_from_object, double truncation) {
   if (points_world.empty()) return truncation;
   const Eigen::Isometry3f object_from_world = world_from_object.inverse().cast<float>();
-  const std::vector<Eigen::Vector3f> queries = objectFramePoints(points_world, object_from_world);
-  std::vector<int> indices;
-  std::vector<float> squared;
-  surface.nearest().search(queries, &indices, &squared, truncation);
-  const float truncation_sq = static_cast<float>(truncation * truncation);
+  const TruncatedDistanceField& field = surface.distanceField(truncation);
   double sum = 0.0;
-  for (const float d2 : squared) sum += d2 < truncation_sq ? std::sqrt(d2) : truncation;
+  for (const auto& p : points_world.points) {
+    sum += field.distance(object_from_world * p.getVector3fMap());
+  }
   return sum / static_cast<double>(points_world.size());
 }
 

@@ -6,11 +6,14 @@
 #include <Eigen/Geometry>
 
 #include <memory>
+#include <mutex>
 #include <vector>
 
 #include "view_direction_classification/refinement/nearest_points.h"
 
 namespace vdc {
+
+class TruncatedDistanceField;
 
 // The model's surface as refinement uses it (doc/method.md, "Refinement"): surface samples with
 // their outward normals in the object frame (the bundle's set S, thinned to `spacing`), a k-d tree
@@ -31,6 +34,9 @@ class ModelSurface {
   // The samples' index for batched nearest-sample searches (nearest_points.h), built once; every
   // search of refinement asks it.
   const NearestPoints& nearest() const { return *nearest_; }
+  // The samples' distance field truncated at `truncation` [m] (distance_field.h: the screening of
+  // refinement's starts), built on first use for each truncation and kept; thread-safe.
+  const TruncatedDistanceField& distanceField(double truncation) const;
   std::size_t size() const { return cloud_->size(); }
   // [m] The thinned samples' spacing (never below the source's).
   double spacing() const { return spacing_; }
@@ -47,6 +53,8 @@ class ModelSurface {
  private:
   pcl::PointCloud<pcl::PointNormal>::Ptr cloud_;
   std::unique_ptr<const NearestPoints> nearest_;
+  mutable std::mutex fields_mutex_;
+  mutable std::vector<std::shared_ptr<const TruncatedDistanceField>> fields_;
   double spacing_;
   Eigen::AlignedBox3d bounds_;
   std::vector<Eigen::ParametrizedLine<double, 3>> symmetry_axes_;
