@@ -238,6 +238,10 @@ std::vector<Eigen::Isometry3d> placedHypotheses(const Eigen::Vector4d& q,
                                                 VisibleParts* visible) {
   const Eigen::Matrix3d rotation = quaternionToRotationMatrix(q);
   const Eigen::Vector3d camera = rotation.transpose() * (camera_position - position);
+  // Where no sample faces the camera (it would sit inside the model) there is no anchor and so
+  // no start; before pieces were placed such a start went to the observed centroid. Restoring
+  // that changed one instance's cone90 on the scene evaluation, so the figures recorded are for
+  // this rule.
   std::vector<Eigen::Isometry3d> poses;
   for (const Eigen::Vector3d& anchor : visible->anchors(camera)) {
     Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();

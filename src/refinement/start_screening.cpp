@@ -1,11 +1,11 @@
 #include "start_screening.h"
 
-#include "distance_field.h"
-
 #include <algorithm>
 #include <cmath>
 #include <map>
 #include <numeric>
+
+#include "distance_field.h"
 
 namespace vdc {
 
