@@ -4,9 +4,11 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <set>
 #include <string>
 #include <utility>
 
+#include "piece_groups.h"
 #include "view_direction_classification/common/error.h"
 #include "view_direction_classification/estimation/verification_scene.h"
 #include "view_direction_classification/recognition/instance_association.h"
@@ -197,10 +199,10 @@ SceneUpdate SceneEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
   // Before identification, which takes an instance whose place was seen free for a moved one.
   result.gone = presence_->observe(instances_, associated, scene, world_from_camera, time);
   // The rest, largest first (segmentScene's order): new instances, parts of the instances found
-  // on this frame, or unknown.
+  // on this frame, or unknown; then what is left, in groups of pieces beside each other.
   int identifications = 0;
-  identifyWholeClusters(cloud, segments, candidates, scene, world_from_camera, time,
-                        &identifications, &result);
+  const std::set<std::vector<std::size_t>> clusters_tried = identifyWholeClusters(
+      cloud, segments, candidates, scene, world_from_camera, time, &identifications, &result);
   for (std::size_t c = 0; c < candidates.size(); ++c) {
     if (candidates[c].instance >= 0 || candidates[c].ignored) continue;
     CandidateOutcome& outcome = result.candidates[c];
@@ -219,6 +221,8 @@ SceneUpdate SceneEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
       identify(candidates[c], scene, world_from_camera, time, &outcome);
     }
   }
+  identifyAdjacentGroups(cloud, segments, candidates, scene, world_from_camera, time,
+                         clusters_tried, &identifications, &result);
   result.forgotten = presence_->forgetGone(instances_, time);
   result.total_ms = millisecondsSince(start);
   return result;
@@ -359,13 +363,11 @@ void SceneEstimator::dropUnlikelyInstances(SceneUpdate* result) {
   }
 }
 
-void SceneEstimator::identifyWholeClusters(const pcl::PointCloud<pcl::PointXYZ>& cloud,
-                                           const SceneSegments& segments,
-                                           std::vector<FrameCandidate>& candidates,
-                                           const SceneDepth& scene,
-                                           const Eigen::Isometry3d& world_from_camera,
-                                           std::optional<double> time, int* identifications,
-                                           SceneUpdate* result) {
+std::set<std::vector<std::size_t>> SceneEstimator::identifyWholeClusters(
+    const pcl::PointCloud<pcl::PointXYZ>& cloud, const SceneSegments& segments,
+    std::vector<FrameCandidate>& candidates, const SceneDepth& scene,
+    const Eigen::Isometry3d& world_from_camera, std::optional<double> time, int* identifications,
+    SceneUpdate* result) {
   std::map<int, std::vector<std::size_t>> pieces;  // per cluster, largest first
   for (std::size_t c = 0; c < candidates.size(); ++c) {
     const int cluster = segments.candidates[c].cluster;
@@ -373,44 +375,115 @@ void SceneEstimator::identifyWholeClusters(const pcl::PointCloud<pcl::PointXYZ>&
     if (explainingInstance(candidates[c]) >= 0) continue;  // a part: the loop after says so
     pieces[cluster].push_back(c);
   }
+  std::set<std::vector<std::size_t>> tried;
   for (const auto& [cluster, members] : pieces) {
-    if (members.size() < 2 || *identifications >= parameters_.max_identifications) continue;
-    std::vector<const SceneCandidate*> parts;
-    for (std::size_t m : members) parts.push_back(&segments.candidates[m]);
-    SceneSegments whole;
-    whole.planes = segments.planes;
-    whole.candidates.push_back(mergedCandidate(cloud, parts));
-    SceneUpdate merged;
-    std::vector<FrameCandidate> union_candidate =
-        frameCandidates(cloud, whole, world_from_camera, &merged);
-    CandidateOutcome& outcome = merged.candidates.front();
-    if (!unknowns_
-             .notRetriedBecause(outcome.centroid_world, outcome.sides,
-                                world_from_camera.translation())
-             .empty()) {
+    if (members.size() < 2) continue;
+    identifyPieces(cloud, segments, members, candidates, scene, world_from_camera, time,
+                   identifications, result);
+    tried.insert(members);
+  }
+  return tried;
+}
+
+void SceneEstimator::identifyAdjacentGroups(
+    const pcl::PointCloud<pcl::PointXYZ>& cloud, const SceneSegments& segments,
+    std::vector<FrameCandidate>& candidates, const SceneDepth& scene,
+    const Eigen::Isometry3d& world_from_camera, std::optional<double> time,
+    const std::set<std::vector<std::size_t>>& tried, int* identifications, SceneUpdate* result) {
+  std::vector<std::size_t> left;  // the candidates without an instance, most points first
+  std::vector<const SceneCandidate*> parts;
+  for (std::size_t c = 0; c < candidates.size(); ++c) {
+    if (candidates[c].instance >= 0 || candidates[c].ignored) continue;
+    if (result->candidates[c].instance >= 0) continue;  // a new instance or a part of one
+    left.push_back(c);
+    parts.push_back(&segments.candidates[c]);
+  }
+  // A candidate that an instance explains (one a group found, or one found after the candidate
+  // was tried alone) is its part, not a member of a group.
+  constexpr int kUnchecked = -2;
+  std::vector<int> part_of(candidates.size(), kUnchecked);
+  const auto available = [&](std::size_t m) {
+    if (candidates[m].instance >= 0) return false;
+    if (part_of[m] == kUnchecked) part_of[m] = explainingInstance(candidates[m]);
+    return part_of[m] < 0;
+  };
+  std::vector<CandidateOutcome> unknown_groups;
+  for (const std::vector<std::size_t>& group :
+       adjacentCandidateGroups(cloud, parts, parameters_.segmentation.cluster_tolerance)) {
+    std::vector<std::size_t> members;
+    for (std::size_t k : group) members.push_back(left[k]);
+    if (tried.count(members) > 0 || !std::all_of(members.begin(), members.end(), available)) {
       continue;
     }
-    ++*identifications;
-    const int index =
-        identify(union_candidate.front(), scene, world_from_camera, time, &outcome, false);
-    if (index < 0) continue;
-    // The largest piece reports the instance, the others are its parts.
-    for (std::size_t k = 0; k < members.size(); ++k) {
-      candidates[members[k]].instance = index;
-      CandidateOutcome& piece = result->candidates[members[k]];
-      piece.instance = outcome.instance;
-      if (k == 0) {
-        piece.new_instance = outcome.new_instance;
-        piece.moved = outcome.moved;
-        piece.probability = outcome.probability;
-        piece.update = outcome.update;
-        piece.note =
-            "identified with the " + std::to_string(members.size() - 1) + " piece(s) it touches";
-      } else {
-        piece.note = "a part of " + instances_[index].name;
-      }
+    CandidateOutcome group_outcome;
+    const UnionOutcome outcome =
+        identifyPieces(cloud, segments, members, candidates, scene, world_from_camera, time,
+                       identifications, result, &group_outcome);
+    if (outcome == UnionOutcome::kUnknown) unknown_groups.push_back(group_outcome);
+    // The explanations checked so far knew nothing of the new instance.
+    if (outcome == UnionOutcome::kIdentified) {
+      std::fill(part_of.begin(), part_of.end(), kUnchecked);
     }
   }
+  for (std::size_t c : left) {
+    if (candidates[c].instance >= 0 || available(c)) continue;
+    result->candidates[c].instance = instances_[part_of[c]].id;
+    result->candidates[c].note = "a part of " + instances_[part_of[c]].name;
+  }
+  // Remembered once every group was tried: a group found unknown must not keep another near it
+  // from being tried on this frame (notRetriedBecause compares centroids and sizes only).
+  for (const CandidateOutcome& group : unknown_groups) {
+    unknowns_.remember(group.centroid_world, group.sides, world_from_camera.translation());
+  }
+}
+
+SceneEstimator::UnionOutcome SceneEstimator::identifyPieces(
+    const pcl::PointCloud<pcl::PointXYZ>& cloud, const SceneSegments& segments,
+    const std::vector<std::size_t>& members, std::vector<FrameCandidate>& candidates,
+    const SceneDepth& scene, const Eigen::Isometry3d& world_from_camera, std::optional<double> time,
+    int* identifications, SceneUpdate* result, CandidateOutcome* union_outcome) {
+  if (*identifications >= parameters_.max_identifications) return UnionOutcome::kNotTried;
+  std::vector<const SceneCandidate*> parts;
+  for (std::size_t m : members) parts.push_back(&segments.candidates[m]);
+  SceneSegments whole;
+  whole.planes = segments.planes;
+  whole.candidates.push_back(mergedCandidate(cloud, parts));
+  SceneUpdate merged;
+  std::vector<FrameCandidate> union_candidate =
+      frameCandidates(cloud, whole, world_from_camera, &merged);
+  CandidateOutcome& outcome = merged.candidates.front();
+  // A union no model fits is no identification (the groups of adjacentCandidateGroups mostly).
+  if (library_.fitting(outcome.sides, parameters_.identification.extent_tolerance).empty()) {
+    return UnionOutcome::kNotTried;
+  }
+  if (!unknowns_
+           .notRetriedBecause(outcome.centroid_world, outcome.sides,
+                              world_from_camera.translation())
+           .empty()) {
+    return UnionOutcome::kNotTried;
+  }
+  ++*identifications;
+  const int index =
+      identify(union_candidate.front(), scene, world_from_camera, time, &outcome, false);
+  if (union_outcome) *union_outcome = outcome;
+  if (index < 0) return UnionOutcome::kUnknown;
+  // The largest piece reports the instance, the others are its parts.
+  for (std::size_t k = 0; k < members.size(); ++k) {
+    candidates[members[k]].instance = index;
+    CandidateOutcome& piece = result->candidates[members[k]];
+    piece.instance = outcome.instance;
+    if (k == 0) {
+      piece.new_instance = outcome.new_instance;
+      piece.moved = outcome.moved;
+      piece.probability = outcome.probability;
+      piece.update = outcome.update;
+      piece.note =
+          "identified with the " + std::to_string(members.size() - 1) + " piece(s) beside it";
+    } else {
+      piece.note = "a part of " + instances_[index].name;
+    }
+  }
+  return UnionOutcome::kIdentified;
 }
 
 int SceneEstimator::identify(const FrameCandidate& candidate, const SceneDepth& scene,

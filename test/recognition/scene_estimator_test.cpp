@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <random>
@@ -220,6 +221,61 @@ TEST(SceneEstimatorOverSplit, AMugCutIntoPiecesIsOneInstanceWithItsPiecesAsParts
   EXPECT_EQ(whole, 2) << describe(estimator, update);
   EXPECT_NE(instanceAt(estimator, kFirstMug.translation()), nullptr);
   EXPECT_NE(instanceAt(estimator, kSecondMug.translation()), nullptr);
+}
+
+// The first mug's points cut into image quadrants, each a cluster of its own (as a depth jump
+// where an object hides part of itself separates its parts), the rest segmented as usual.
+SceneSegments firstMugInQuadrants(const pcl::PointCloud<pcl::PointXYZ>& cloud,
+                                  const Eigen::Isometry3d& world_from_camera) {
+  SceneSegments segments = segmentScene(cloud, {});
+  SceneCandidate mug;
+  std::vector<SceneCandidate> others;
+  for (const SceneCandidate& candidate : segments.candidates) {
+    const Eigen::Vector3d centroid = world_from_camera * candidate.centroid;
+    if ((centroid - kFirstMug.translation()).head<2>().norm() < 0.08) {
+      mug.indices.insert(mug.indices.end(), candidate.indices.begin(), candidate.indices.end());
+      mug.support = candidate.support;
+    } else {
+      others.push_back(candidate);
+    }
+  }
+  std::vector<int> rows, columns;
+  for (int index : mug.indices) {
+    rows.push_back(index / static_cast<int>(cloud.width));
+    columns.push_back(index % static_cast<int>(cloud.width));
+  }
+  std::nth_element(rows.begin(), rows.begin() + rows.size() / 2, rows.end());
+  std::nth_element(columns.begin(), columns.begin() + columns.size() / 2, columns.end());
+  const int row = rows[rows.size() / 2], column = columns[columns.size() / 2];
+  std::vector<SceneCandidate> quadrants(4);
+  for (int index : mug.indices) {
+    const int q = (index / static_cast<int>(cloud.width) < row ? 0 : 2) +
+                  (index % static_cast<int>(cloud.width) < column ? 0 : 1);
+    quadrants[q].indices.push_back(index);
+  }
+  segments.candidates = others;
+  for (int q = 0; q < 4; ++q) {
+    quadrants[q].support = mug.support;
+    quadrants[q].cluster = 100 + q;
+    segments.candidates.push_back(mergedCandidate(cloud, {&quadrants[q]}));
+  }
+  return segments;
+}
+
+// Alone no quadrant is explained by the mug better than by "unknown" (checked: without the
+// groups of adjacentCandidateGroups none becomes an instance); two beside each other are.
+TEST(SceneEstimatorPieces, PartsOfAMugInDifferentClustersAreIdentifiedTogether) {
+  SceneEstimator estimator = makeEstimator();
+  const Eigen::Isometry3d pose = worldFromCamera(kFirstView);
+  const pcl::PointCloud<pcl::PointXYZ> cloud = render(pose, 1);
+  const SceneSegments segments = firstMugInQuadrants(cloud, pose);
+  const std::size_t first_quadrant = segments.candidates.size() - 4;
+  const SceneUpdate update = estimator.update(cloud, segments, pose, 0.0);
+  const ObjectInstance* first = instanceAt(estimator, kFirstMug.translation());
+  ASSERT_NE(first, nullptr) << describe(estimator, update);
+  for (std::size_t q = first_quadrant; q < update.candidates.size(); ++q) {
+    EXPECT_EQ(update.candidates[q].instance, first->id) << describe(estimator, update);
+  }
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -200,11 +201,34 @@ class SceneEstimator {
   // Segmentation splits objects at concave edges, and some objects are cut by their own (an
   // elephant at its legs, a mug at its handle): the pieces of one cluster that no instance has
   // are first tried together, and become one instance if a model explains them so; else each is
-  // tried alone.
-  void identifyWholeClusters(const pcl::PointCloud<pcl::PointXYZ>& cloud,
-                             const SceneSegments& segments, std::vector<FrameCandidate>& candidates,
-                             const SceneDepth& scene, const Eigen::Isometry3d& world_from_camera,
-                             std::optional<double> time, int* identifications, SceneUpdate* result);
+  // tried alone. Returns the unions tried (candidate indices, ascending).
+  std::set<std::vector<std::size_t>> identifyWholeClusters(
+      const pcl::PointCloud<pcl::PointXYZ>& cloud, const SceneSegments& segments,
+      std::vector<FrameCandidate>& candidates, const SceneDepth& scene,
+      const Eigen::Isometry3d& world_from_camera, std::optional<double> time, int* identifications,
+      SceneUpdate* result);
+  // After each candidate was tried alone: the candidates no instance explains, each with those
+  // beside it in the image (adjacentCandidateGroups), are tried as one object, but for the
+  // unions tried already.
+  void identifyAdjacentGroups(const pcl::PointCloud<pcl::PointXYZ>& cloud,
+                              const SceneSegments& segments,
+                              std::vector<FrameCandidate>& candidates, const SceneDepth& scene,
+                              const Eigen::Isometry3d& world_from_camera,
+                              std::optional<double> time,
+                              const std::set<std::vector<std::size_t>>& tried, int* identifications,
+                              SceneUpdate* result);
+  // Identifies the union of members (candidates of one cluster, or beside each other, most
+  // points first) as one object. Identified: it became an instance, whose largest piece reports
+  // it and the others are its parts. Not tried: no model fits its size, it is a known unknown, or
+  // max_identifications was reached. union_outcome (optional): the union's outcome.
+  enum class UnionOutcome { kNotTried, kUnknown, kIdentified };
+  UnionOutcome identifyPieces(const pcl::PointCloud<pcl::PointXYZ>& cloud,
+                              const SceneSegments& segments,
+                              const std::vector<std::size_t>& members,
+                              std::vector<FrameCandidate>& candidates, const SceneDepth& scene,
+                              const Eigen::Isometry3d& world_from_camera,
+                              std::optional<double> time, int* identifications, SceneUpdate* result,
+                              CandidateOutcome* union_outcome = nullptr);
   // remember_unknown: an unknown outcome is remembered (unknowns_) for its centroid.
   // Returns the index of the candidate's instance (a new one, or a known one that moved), or -1.
   int identify(const FrameCandidate& candidate, const SceneDepth& scene,
