@@ -36,6 +36,14 @@ class EstimatorReconfigure(unittest.TestCase):
         self.assertEqual(rospy.get_param("/%s/max_components" % NODE), 5)
         self.client.update_configuration({"max_components": 20, "n_feat": 0})
 
+    def test_the_camera_pose_uncertainty_is_tuned_live_and_clamped_at_zero(self):
+        config = self.client.update_configuration({"camera_pose_uncertainty_deg": 2.0})
+        self.assertAlmostEqual(config["camera_pose_uncertainty_deg"], 2.0)
+        self.assertAlmostEqual(rospy.get_param("/%s/camera_pose_uncertainty_deg" % NODE), 2.0)
+        # Below the .cfg's range: dynamic_reconfigure clamps it to 0 (exact poses).
+        config = self.client.update_configuration({"camera_pose_uncertainty_deg": -1.0})
+        self.assertAlmostEqual(config["camera_pose_uncertainty_deg"], 0.0)
+
     def test_refinement_is_switched_live_and_its_knobs_checked(self):
         config = self.client.update_configuration(
             {"refinement": "icp", "refinement_girdle_step_deg": 15.0, "psum_exponent": 2.0})
