@@ -262,6 +262,14 @@ Eigen::VectorXd SettingErrors::insideCone90PerView() const {
   return inside.colwise().mean().transpose();
 }
 
+Eigen::VectorXd SettingErrors::confidentlyWrongPerView(double min_error_deg) const {
+  if (cone90_deg.size() != errors_deg.size() || errors_deg.rows() == 0) return {};
+  const Eigen::ArrayXXd errors = errors_deg.array();
+  const Eigen::ArrayXXd wrong =
+      ((errors > 2.0 * cone90_deg.array()) && (errors > min_error_deg)).cast<double>();
+  return wrong.colwise().mean().transpose();
+}
+
 EvaluationResult evaluateEstimator(std::shared_ptr<const ModelBundle> model,
                                    const TriangleMesh& mesh,
                                    const std::vector<Eigen::Vector3d>& anchors,

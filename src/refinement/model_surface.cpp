@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "distance_field.h"
+#include "half_turn_axes.h"
 #include "view_direction_classification/common/error.h"
 
 namespace vdc {
@@ -37,7 +38,8 @@ Eigen::Vector3d axisPoint(const pcl::PointCloud<pcl::PointNormal>& samples,
 // has every (p - c) x n orthogonal to d, so d is the eigenvector of the smallest eigenvalue of
 // the sum of their outer products; the other two eigenvectors are the next best. Unlike the
 // samples' principal axes, which a mug's handle tilts by 10 degrees off the body's axis, the
-// body's normals fix this one. Each direction is placed through its own best point.
+// body's normals fix this one. Each direction is placed through its own best point (the
+// first use replaces the other two by the half turns' axes).
 std::vector<Eigen::ParametrizedLine<double, 3>> nearSymmetryAxes(
     const pcl::PointCloud<pcl::PointNormal>& samples) {
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
@@ -103,8 +105,21 @@ ModelSurface::ModelSurface(const std::vector<Eigen::Vector3f>& points,
     sample_normals.push_back(point.getNormalVector3fMap());
   }
   nearest_ = std::make_unique<const NearestPoints>(std::move(samples), std::move(sample_normals));
-  symmetry_axes_ = nearSymmetryAxes(*cloud_);
 }
+
+const std::vector<Eigen::ParametrizedLine<double, 3>>& ModelSurface::symmetryAxes() const {
+  std::call_once(symmetry_axes_once_, [this] {
+    symmetry_axes_ = nearSymmetryAxes(*cloud_);
+    // The other two eigenvectors say nothing about half turns (a mug's are 9 degrees off the
+    // line through its handle): the axes of the half turns are searched for.
+    const auto half_turns =
+        halfTurnAxes(*cloud_, *nearest_, symmetry_axes_[0], symmetry_axes_[1].direction());
+    symmetry_axes_[1] = half_turns[0];
+    symmetry_axes_[2] = half_turns[1];
+  });
+  return symmetry_axes_;
+}
+
 const TruncatedDistanceField& ModelSurface::distanceField(double truncation) const {
   const std::lock_guard<std::mutex> lock(fields_mutex_);
   for (const auto& field : fields_) {

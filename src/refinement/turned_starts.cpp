@@ -21,9 +21,17 @@ std::vector<Eigen::Isometry3d> turnedStarts(const ModelSurface& surface,
   for (int k = 1; k < turns; ++k) {
     starts.push_back(turnedAbout(world_from_object, axes[0], k * 2.0 * M_PI / turns));
   }
-  starts.push_back(turnedAbout(world_from_object, axes[1], M_PI));
-  starts.push_back(turnedAbout(world_from_object, axes[2], M_PI));
+  for (const Eigen::Isometry3d& start : halfTurnStarts(surface, world_from_object)) {
+    starts.push_back(start);
+  }
   return starts;
+}
+
+std::vector<Eigen::Isometry3d> halfTurnStarts(const ModelSurface& surface,
+                                              const Eigen::Isometry3d& world_from_object) {
+  const auto& axes = surface.symmetryAxes();
+  return {turnedAbout(world_from_object, axes[1], M_PI),
+          turnedAbout(world_from_object, axes[2], M_PI)};
 }
 
 }  // namespace vdc

@@ -27,4 +27,9 @@ std::vector<Eigen::Isometry3d> turnedStarts(const ModelSurface& surface,
                                             const Eigen::Isometry3d& world_from_object,
                                             double step_deg);
 
+// The last two of those: world_from_object turned half a turn about each of the model's half
+// turn axes (half_turn_axes.h).
+std::vector<Eigen::Isometry3d> halfTurnStarts(const ModelSurface& surface,
+                                              const Eigen::Isometry3d& world_from_object);
+
 }  // namespace vdc

@@ -23,6 +23,7 @@ void printTimings(const EvaluationResult& result) {
 
 // The median after views 1, 5, 10, 20 and the last, and when it stays under kConvergedDeg.
 void printInsideCone90(const Eigen::VectorXd& fractions);
+void printConfidentlyWrong(const Eigen::VectorXd& fractions);
 
 void printSettingMedians(const SettingErrors& setting, int views) {
   const Eigen::VectorXd medians = setting.medianPerView();
@@ -41,12 +42,22 @@ void printSettingMedians(const SettingErrors& setting, int views) {
     std::printf(" deg; never < %.0f deg to the end\n", kConvergedDeg);
   }
   printInsideCone90(setting.insideCone90PerView());
+  printConfidentlyWrong(setting.confidentlyWrongPerView());
 }
 
 // The calibration figure after each view (or at each view's end of a stream).
 void printInsideCone90(const Eigen::VectorXd& fractions) {
   if (fractions.size() == 0) return;
   std::printf("        truth inside cone90 after view 1..%d:", static_cast<int>(fractions.size()));
+  for (Eigen::Index v = 0; v < fractions.size(); ++v) std::printf(" %.2f", fractions(v));
+  std::printf("\n");
+}
+
+// Printed only where it happened: on the renders it is nearly always none.
+void printConfidentlyWrong(const Eigen::VectorXd& fractions) {
+  if (fractions.size() == 0 || fractions.maxCoeff() == 0.0) return;
+  std::printf("        confidently wrong (error > 2 x cone90 and > %.0f deg) after view 1..%d:",
+              SettingErrors::kConfidentlyWrongMinDeg, static_cast<int>(fractions.size()));
   for (Eigen::Index v = 0; v < fractions.size(); ++v) std::printf(" %.2f", fractions(v));
   std::printf("\n");
 }

@@ -53,7 +53,8 @@ nlohmann::json settingSummary(const SettingErrors& setting, int views) {
       {"median_position_error_mm", position_medians},
       {"median_position_error_mm_after_views", position_after},
       {"views_until_median_below_5deg", converged ? nlohmann::json(*converged) : nlohmann::json()},
-      {"inside_cone90_fraction", toVector(setting.insideCone90PerView())}};
+      {"inside_cone90_fraction", toVector(setting.insideCone90PerView())},
+      {"confidently_wrong_fraction", toVector(setting.confidentlyWrongPerView())}};
 }
 
 double medianOf(std::vector<double> values) {

@@ -75,6 +75,20 @@ TEST(EvaluationTest, TheCalibrationFigureIsTheFractionOfSequencesWithTheErrorWit
   EXPECT_EQ(SettingErrors().insideCone90PerView().size(), 0) << "no trust signals, no figure";
 }
 
+TEST(EvaluationTest, ConfidentlyWrongIsAnErrorBeyondTwiceCone90AndBeyondTheFloor) {
+  SettingErrors setting;
+  setting.errors_deg.resize(4, 2);
+  setting.errors_deg << 174, 0.3, 100, 2.5, 31, 12, 4, 50;
+  setting.cone90_deg.resize(4, 2);
+  setting.cone90_deg << 67, 0.05, 60, 1, 15, 5, 1, 30;
+  // View 1: 174 > 134 and 31 > 30 count; 100 < 120 does not; 4 > 2 is under the 5-degree floor.
+  // View 2: 12 > 10 counts; 0.3 > 0.1 and 2.5 > 2 are under the floor; 50 < 60.
+  EXPECT_TRUE(setting.confidentlyWrongPerView().isApprox(Eigen::Vector2d(0.5, 0.25)));
+  EXPECT_TRUE(setting.confidentlyWrongPerView(0.0).isApprox(Eigen::Vector2d(0.75, 0.75)))
+      << "without the floor the renders' tenths of a degree against hundredths count";
+  EXPECT_EQ(SettingErrors().confidentlyWrongPerView().size(), 0) << "no trust signals, no figure";
+}
+
 TEST(EvaluationTest, RandomPlannerGivesFiniteErrorsBetweenZeroAnd180PerSettingSequenceAndView) {
   const EvaluationSettings settings = smallSettings();
   const EvaluationResult result = evaluateEstimator(

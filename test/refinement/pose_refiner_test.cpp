@@ -777,6 +777,72 @@ TEST_F(PoseRefinerTest, SymmetryAxisOfTheMugIsItsBodysAxis) {
   EXPECT_GT(std::abs(direction.z()), std::cos(1.0 * M_PI / 180.0)) << direction.transpose();
 }
 
+TEST_F(PoseRefinerTest, TheMugsFirstHalfTurnAxisRunsThroughItsHandleAndTheBodysMiddle) {
+  // A half turn about the line from the body's middle through the handle leaves the handle where
+  // it was and the body upside down: the one turn a view of the handle alone cannot tell. The
+  // eigenvectors the axis of revolution comes from put the next axis 9 degrees off that line.
+  const auto& axes = (*surface_)->symmetryAxes();
+  ASSERT_EQ(axes.size(), 3u);
+  EXPECT_GT(std::abs(axes[1].direction().x()), std::cos(1.0 * M_PI / 180.0))
+      << axes[1].direction().transpose();
+  const double middle = mesh_->bounds().center().z();
+  EXPECT_NEAR(axes[1].origin().z(), middle, 0.002);
+  EXPECT_NEAR(axes[1].origin().y(), 0.0, 0.002);
+  EXPECT_NEAR(axes[2].direction().dot(axes[1].direction()), 0.0, 1e-9);
+  EXPECT_NEAR(axes[2].direction().dot(axes[0].direction()), 0.0, 1e-9);
+}
+
+TEST_F(PoseRefinerTest, RestartsFindTheUpsideDownTwinOfAViewOfTheHandleAlone) {
+  // Only the points around the handle are left, and the belief (broad, as after a first view)
+  // holds the mug upside down about the line through its handle, which explains them as well as
+  // the truth: the restarts' half turn must reach the truth, so that both poses are kept and
+  // the measurement is no surer of one than the view is.
+  RefinementView v = view(kHandleSideOn, 0.7);
+  v.points = aroundTheHandle(v);
+  const Eigen::Vector4d twin =
+      quaternionMultiply(truth(), quaternionFromAxisAngle(Eigen::Vector3d::UnitX(), M_PI));
+  const RefinementResult result = PoseRefiner(*surface_).refine(
+      BinghamMixture({1.0}, {concentratedAt(twin, 5.0)}), position(), {v});
+  const auto nearest = [&](const Eigen::Vector4d& q) {
+    double best = 180.0;
+    for (const RefinedPose& pose : result.kept) {
+      best = std::min(best, rotationErrorDeg(pose.orientation, q));
+    }
+    return best;
+  };
+  EXPECT_LT(nearest(truth()), 5.0) << describe(result, truth());
+  EXPECT_LT(nearest(twin), 5.0) << describe(result, truth());
+}
+
+TEST_F(PoseRefinerTest, ASecondRoundOfRestartsTurnsTheTwinARestartFoundBackOntoTheTruth) {
+  // Around the handle alone, from a belief 12 degrees off the truth: the start converges a few
+  // degrees off, its half turn lands on the twin exactly and beats it. One round keeps the twin
+  // alone, which a belief fuses as sure of the wrong side; the twin's own half turn lands on the
+  // truth, and both are kept.
+  RefinementView v = view(Eigen::Vector3d(1.0, 0.2, 0.6), 1.9);
+  v.points = aroundTheHandle(v);
+  const Eigen::Vector4d twin =
+      quaternionMultiply(truth(), quaternionFromAxisAngle(Eigen::Vector3d::UnitX(), M_PI));
+  const Eigen::Vector4d off = quaternionMultiply(
+      quaternionFromAxisAngle(Eigen::Vector3d(1.0, 1.0, 0.0).normalized(), 12.0 * M_PI / 180.0),
+      truth());
+  const BinghamMixture belief({1.0}, {concentratedAt(off, 5.0)});
+  const auto nearest = [](const RefinementResult& result, const Eigen::Vector4d& q) {
+    double best = 180.0;
+    for (const RefinedPose& pose : result.kept) {
+      best = std::min(best, rotationErrorDeg(pose.orientation, q));
+    }
+    return best;
+  };
+  const RefinementResult two_rounds = PoseRefiner(*surface_).refine(belief, position(), {v});
+  EXPECT_LT(nearest(two_rounds, truth()), 5.0) << describe(two_rounds, truth());
+  EXPECT_LT(nearest(two_rounds, twin), 5.0) << describe(two_rounds, truth());
+  RefinementParameters one_round;
+  one_round.restart_rounds = 1;
+  const RefinementResult one = PoseRefiner(*surface_, one_round).refine(belief, position(), {v});
+  EXPECT_GT(nearest(one, truth()), 90.0) << describe(one, truth());
+}
+
 TEST_F(PoseRefinerTest, SkipsBadInputWithAReason) {
   const RefinementView v = view(kHandleSideOn, 1.0);
   const BinghamMixture belief({1.0}, {concentratedAt(truth())});
@@ -857,6 +923,9 @@ TEST_F(PoseRefinerTest, RefusesInvalidParameters) {
   EXPECT_THROW(PoseRefiner(*surface_, parameters), Error);
   parameters = {};
   parameters.restart_screening_iterations = 0;
+  EXPECT_THROW(PoseRefiner(*surface_, parameters), Error);
+  parameters = {};
+  parameters.restart_rounds = 3;
   EXPECT_THROW(PoseRefiner(*surface_, parameters), Error);
   parameters = {};
   parameters.restart_max_log_density_drop = 0.0;

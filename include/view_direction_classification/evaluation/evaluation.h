@@ -124,6 +124,12 @@ struct SettingErrors {
   // The calibration figure: the fraction of sequences whose MAP error after each view is at most
   // its cone90_deg (views entries; empty without trust signals). An honest belief gives ~0.9.
   Eigen::VectorXd insideCone90PerView() const;
+  // The failure calibration exists to prevent: the fraction of sequences whose MAP error after
+  // each view is more than twice its cone90_deg (the truth outside the cone by more than the
+  // cone's width) and more than min_error_deg (so that tenths of a degree against a cone of
+  // hundredths, the renders' floor, do not count). Empty without trust signals.
+  static constexpr double kConfidentlyWrongMinDeg = 5.0;
+  Eigen::VectorXd confidentlyWrongPerView(double min_error_deg = kConfidentlyWrongMinDeg) const;
   // The same for the position errors, over the sequences that have one (NaN: none has).
   Eigen::VectorXd medianPositionPerView() const;
 };

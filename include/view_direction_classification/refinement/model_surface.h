@@ -42,13 +42,15 @@ class ModelSurface {
   double spacing() const { return spacing_; }
   const Eigen::AlignedBox3d& bounds() const { return bounds_; }
   double diagonal() const { return bounds_.diagonal().norm(); }
-  // Three orthogonal lines (object frame), best first, about which the surface is as nearly
-  // rotationally symmetric as it gets: the axes about which a nearly symmetric object looks
-  // nearly the same when turned, where ICP settles into the wrong turn (pose_refiner.h,
-  // restarts). How they are found: nearSymmetryAxes() in model_surface.cpp.
-  const std::vector<Eigen::ParametrizedLine<double, 3>>& symmetryAxes() const {
-    return symmetry_axes_;
-  }
+  // Three orthogonal lines (object frame) about which a nearly symmetric object looks nearly the
+  // same when turned, where ICP settles into the wrong turn (pose_refiner.h, restarts): first
+  // the axis about which the surface is as nearly rotationally symmetric as it gets
+  // (nearSymmetryAxes() in model_surface.cpp), then the two orthogonal to it that meet it in the
+  // middle of the surface, the first of them the one a half turn about which moves the surface
+  // least (half_turn_axes.h).
+  // Found on first use and kept; thread-safe. The scene layer builds dozens of surfaces per view
+  // (polish surfaces, surfaces freed between candidates), most never restarted from.
+  const std::vector<Eigen::ParametrizedLine<double, 3>>& symmetryAxes() const;
 
  private:
   pcl::PointCloud<pcl::PointNormal>::Ptr cloud_;
@@ -57,7 +59,8 @@ class ModelSurface {
   mutable std::vector<std::shared_ptr<const TruncatedDistanceField>> fields_;
   double spacing_;
   Eigen::AlignedBox3d bounds_;
-  std::vector<Eigen::ParametrizedLine<double, 3>> symmetry_axes_;
+  mutable std::once_flag symmetry_axes_once_;
+  mutable std::vector<Eigen::ParametrizedLine<double, 3>> symmetry_axes_;
 };
 
 // The points of a cloud in the fixed frame, moved into the object frame of the model's samples:
