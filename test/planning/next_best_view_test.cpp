@@ -55,6 +55,8 @@ TEST(SampleCandidatePoses, PutsCamerasAtTheDistanceLookingAtTheObject) {
     EXPECT_NEAR(optical_axis.dot((object - pose.translation()).normalized()), 1.0, 1e-9);
   }
   EXPECT_THROW(sampleCandidatePoses(1, 0.7, object), Error);
+  // More would hold the server for seconds (the sphere grows with the count's square).
+  EXPECT_THROW(sampleCandidatePoses(kMaxSampledCandidates + 1, 0.7, object), Error);
   EXPECT_THROW(sampleCandidatePoses(10, 0.0, object), Error);
 }
 

@@ -48,8 +48,9 @@ std::vector<RankedCandidate> rankCandidates(const ViewUtilityScorer& scorer,
 
 // `count` candidate camera poses T_WC (optical frame: z towards the object centre, the fixed
 // frame's +z up in the image) at `distance` around `object_position`, near-uniform on the sphere
-// (ViewSphere directions). Throws vdc::Error for count < 2 or > 10000, or a non-positive or
-// non-finite distance.
+// (ViewSphere directions). Throws vdc::Error for count < 2 or > kMaxSampledCandidates, or a
+// non-positive or non-finite distance.
+constexpr int kMaxSampledCandidates = 1000;
 std::vector<Eigen::Isometry3d> sampleCandidatePoses(int count, double distance,
                                                     const Eigen::Vector3d& object_position);
 
