@@ -6,54 +6,19 @@ request went unanswered or was answered wrongly (a malformed one accepted, a goo
 import argparse
 import csv
 import math
-import os
 import sys
 import threading
 import time
-import xmlrpc.client
 
 import geometry_msgs.msg
-import rosgraph
 import rospy
 from diagnostic_msgs.msg import DiagnosticArray
+from soak_processes import rss_kib, wait_for_pid
 from view_direction_classification.srv import (GetHeatmap, GetHeatmapRequest, GetNextBestView,
                                                GetNextBestViewRequest, MoveCamera,
                                                MoveCameraRequest)
 
 NODES = ["simulated_depth_camera", "orientation_estimator", "informativeness_server"]
-
-
-def node_pid(name):
-    """The process id of a running node, from its XML-RPC API (what rosnode info prints)."""
-    master = rosgraph.Master("/soak")
-    uri = master.lookupNode("/" + name)
-    code, _, pid = xmlrpc.client.ServerProxy(uri).getPid("/soak")
-    if code != 1:
-        raise RuntimeError("node /%s did not give its pid" % name)
-    return int(pid)
-
-
-def wait_for_pid(name, timeout=120.0):
-    deadline = time.monotonic() + timeout
-    while True:
-        try:
-            return node_pid(name)
-        except (rosgraph.MasterError, OSError, RuntimeError):
-            if time.monotonic() > deadline:
-                raise
-            time.sleep(1.0)
-
-
-def rss_kib(pid):
-    """VmRSS of a process in KiB, None once it is gone."""
-    try:
-        with open("/proc/%d/status" % pid) as status:
-            for line in status:
-                if line.startswith("VmRSS:"):
-                    return int(line.split()[1])
-    except FileNotFoundError:
-        return None
-    return None
 
 
 def malformed_request(index):
@@ -107,7 +72,7 @@ class Soak:
         self.latencies = []
         self.moves = 0
         self.samples = []  # (t, node, rss KiB)
-        self.pids = {name: wait_for_pid(name) for name in NODES}
+        self.pids = {name: wait_for_pid("/soak", name) for name in NODES}
         self.dead = set()
         rospy.Subscriber("/diagnostics", DiagnosticArray, self.on_diagnostics)
 

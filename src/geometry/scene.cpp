@@ -47,18 +47,25 @@ double tableHeight(const Scene& scene) {
   return lowest;
 }
 
+ScenePart tablePart(const Scene& scene) {
+  if (!scene.table_size) throw Error("the scene has no table");
+  Eigen::Isometry3d world_from_table = Eigen::Isometry3d::Identity();
+  const Eigen::Vector3d object_origin = scene.object.world_from_part.translation();
+  world_from_table.translation() =
+      Eigen::Vector3d(object_origin.x(), object_origin.y(), tableHeight(scene));
+  return {makeRectangleMesh(*scene.table_size), world_from_table};
+}
+
 TriangleMesh sceneMesh(const Scene& scene) {
-  TriangleMesh mesh = transformed(scene.object.mesh, scene.object.world_from_part);
-  if (scene.table_size) {
-    Eigen::Isometry3d world_from_table = Eigen::Isometry3d::Identity();
-    const Eigen::Vector3d object_origin = scene.object.world_from_part.translation();
-    world_from_table.translation() =
-        Eigen::Vector3d(object_origin.x(), object_origin.y(), tableHeight(scene));
-    mesh.append(transformed(makeRectangleMesh(*scene.table_size), world_from_table));
-  }
-  for (const ScenePart& part : scene.distractors) {
-    mesh.append(transformed(part.mesh, part.world_from_part));
-  }
+  std::vector<ScenePart> parts = {scene.object};
+  if (scene.table_size) parts.push_back(tablePart(scene));
+  parts.insert(parts.end(), scene.distractors.begin(), scene.distractors.end());
+  return partsMesh(parts);
+}
+
+TriangleMesh partsMesh(const std::vector<ScenePart>& parts) {
+  TriangleMesh mesh;
+  for (const ScenePart& part : parts) mesh.append(transformed(part.mesh, part.world_from_part));
   return mesh;
 }
 

@@ -96,8 +96,13 @@ SceneEstimator::SceneEstimator(ModelLibrary library, SceneEstimatorParameters pa
   checkSceneEstimatorParameters(parameters_);
   // The candidate is the object: the instance estimators segment nothing.
   parameters_.instance.segmentation.mode = SegmentationMode::kNone;
+  // One idle estimator per model, built with the instance settings (which throws for bad
+  // ones), and kept: every candidate's fresh estimator shares its refiners' model surfaces
+  // (k-d trees, distance fields, symmetry axes), which live only while some refiner holds them.
+  // Without these, each candidate rebuilt them for every model that fits it.
   for (const LibraryModel& model : library_.models()) {
-    OrientationEstimator check(model.bundle, parameters_.instance);  // throws for bad settings
+    surface_holders_.push_back(
+        std::make_unique<OrientationEstimator>(model.bundle, parameters_.instance));
   }
   instances_named_.assign(library_.size(), 0);
   for (const LibraryModel& model : library_.models()) {

@@ -38,8 +38,9 @@ Eigen::Vector3d axisPoint(const pcl::PointCloud<pcl::PointNormal>& samples,
 // has every (p - c) x n orthogonal to d, so d is the eigenvector of the smallest eigenvalue of
 // the sum of their outer products; the other two eigenvectors are the next best. Unlike the
 // samples' principal axes, which a mug's handle tilts by 10 degrees off the body's axis, the
-// body's normals fix this one. Each direction is placed through its own best point (the
-// first use replaces the other two by the half turns' axes).
+// body's normals fix this one, and it is placed through its best point; the other two only
+// start the search for the half turns' axes that replace them (symmetryAxes()), so they are left
+// through the centroid.
 std::vector<Eigen::ParametrizedLine<double, 3>> nearSymmetryAxes(
     const pcl::PointCloud<pcl::PointNormal>& samples) {
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
@@ -54,10 +55,8 @@ std::vector<Eigen::ParametrizedLine<double, 3>> nearSymmetryAxes(
   const Eigen::Matrix3d directions =
       Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(moments).eigenvectors();
   std::vector<Eigen::ParametrizedLine<double, 3>> axes;
-  for (int i = 0; i < 3; ++i) {
-    const Eigen::Vector3d d = directions.col(i);
-    axes.emplace_back(axisPoint(samples, centroid, d), d);
-  }
+  axes.emplace_back(axisPoint(samples, centroid, directions.col(0)), directions.col(0));
+  for (int i = 1; i < 3; ++i) axes.emplace_back(centroid, directions.col(i));
   return axes;
 }
 

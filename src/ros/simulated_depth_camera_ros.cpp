@@ -8,6 +8,8 @@
 #include <boost/make_shared.hpp>
 
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <string>
 #include <utility>
 
@@ -44,6 +46,20 @@ geometry_msgs::TransformStamped toTransformMsg(const Eigen::Isometry3d& parent_f
   return msg;
 }
 
+// The renderer of the parts present and the table (table: empty for none), all in the fixed
+// frame in one z-buffer, so that they hide each other; null when nothing is left to render.
+std::shared_ptr<const DepthRenderer> sceneRenderer(const std::vector<ScenePart>& parts,
+                                                   const std::vector<bool>& present,
+                                                   const std::optional<ScenePart>& table) {
+  std::vector<ScenePart> shown;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    if (present[i]) shown.push_back(parts[i]);
+  }
+  if (table) shown.push_back(*table);
+  if (shown.empty()) return nullptr;
+  return std::make_shared<const DepthRenderer>(partsMesh(shown));
+}
+
 }  // namespace
 
 SimulatedDepthCameraRos::SimulatedDepthCameraRos(ros::NodeHandle node, ros::NodeHandle private_node)
@@ -53,9 +69,8 @@ SimulatedDepthCameraRos::SimulatedDepthCameraRos(ros::NodeHandle node, ros::Node
   camera_frame_ = p.camera_frame;
   object_frame_ = p.object_frame;
   publish_object_tf_ = p.publish_object_tf;
-  world_from_object_ = poseFromXyzRpy(p.object_pose);
   Scene scene;
-  scene.object = {p.mesh == "mug" ? makeMug() : loadMesh(p.mesh), world_from_object_};
+  scene.object = {p.mesh == "mug" ? makeMug() : loadMesh(p.mesh), poseFromXyzRpy(p.object_pose)};
   if (p.table_size[0] > 0.0) scene.table_size = Eigen::Vector2d(p.table_size[0], p.table_size[1]);
   const std::vector<std::string> distractors = distractorDescriptions(p.distractors);
   for (std::size_t i = 0; i < distractors.size(); ++i) {
@@ -63,8 +78,11 @@ SimulatedDepthCameraRos::SimulatedDepthCameraRos(ros::NodeHandle node, ros::Node
                                    p.distractor_poses.begin() + 6 * (i + 1));
     scene.distractors.push_back({distractorMesh(distractors[i]), poseFromXyzRpy(pose)});
   }
-  // The whole scene in the fixed frame: one z-buffer, so the parts hide each other.
-  renderer_ = std::make_unique<DepthRenderer>(sceneMesh(scene));
+  if (scene.table_size) table_ = tablePart(scene);
+  parts_ = {scene.object};
+  parts_.insert(parts_.end(), scene.distractors.begin(), scene.distractors.end());
+  present_.assign(parts_.size(), true);
+  renderer_ = sceneRenderer(parts_, present_, table_);
   noise_.enabled = p.noise;
   rng_.seed(static_cast<std::uint32_t>(p.seed));
   visibility_radius_ = p.visibility_radius;
@@ -75,10 +93,12 @@ SimulatedDepthCameraRos::SimulatedDepthCameraRos(ros::NodeHandle node, ros::Node
   if (visibility_anchors_.empty()) visibility_anchors_ = mugHandleAnchors();
   const Eigen::Vector3d direction(p.view_direction[0], p.view_direction[1], p.view_direction[2]);
   world_from_camera_ =
-      world_from_object_ * cameraFromObject(direction, p.distance, p.roll).inverse();
+      parts_[0].world_from_part * cameraFromObject(direction, p.distance, p.roll).inverse();
 
   cloud_publisher_ = private_node_.advertise<sensor_msgs::PointCloud2>("cloud", 1);
   move_service_ = private_node_.advertiseService("move_to", &SimulatedDepthCameraRos::moveTo, this);
+  place_service_ =
+      private_node_.advertiseService("place_part", &SimulatedDepthCameraRos::placePart, this);
   timer_ =
       node_.createTimer(ros::Duration(1.0 / p.rate), &SimulatedDepthCameraRos::publishView, this);
   ROS_INFO_NAMED(
@@ -91,26 +111,41 @@ SimulatedDepthCameraRos::SimulatedDepthCameraRos(ros::NodeHandle node, ros::Node
 }
 
 void SimulatedDepthCameraRos::publishView(const ros::TimerEvent&) {
-  Eigen::Isometry3d world_from_camera;
+  Eigen::Isometry3d world_from_camera, world_from_object;
+  bool object_present = false;
+  std::shared_ptr<const DepthRenderer> renderer;
   {
     std::lock_guard<std::mutex> lock(mutex_);
     world_from_camera = world_from_camera_;
+    world_from_object = parts_[0].world_from_part;
+    object_present = present_[0];
+    renderer = renderer_;
   }
   const ros::Time stamp = ros::Time::now();
   // The tf goes out even when nobody listens to the cloud: the estimator needs it to place the
   // cloud, and an rviz user sees where the camera is.
   std::vector<geometry_msgs::TransformStamped> transforms = {
       toTransformMsg(world_from_camera, fixed_frame_, camera_frame_, stamp)};
-  if (publish_object_tf_) {
-    transforms.push_back(toTransformMsg(world_from_object_, fixed_frame_, object_frame_, stamp));
+  if (publish_object_tf_ && object_present) {
+    transforms.push_back(toTransformMsg(world_from_object, fixed_frame_, object_frame_, stamp));
   }
   tf_broadcaster_.sendTransform(transforms);
   if (cloud_publisher_.getNumSubscribers() == 0) return;  // rendering costs; skip it unheard
 
   const Eigen::Isometry3d camera_from_world = world_from_camera.inverse();
-  pcl::PointCloud<pcl::PointXYZ> cloud = renderer_->render(camera_from_world, noise_, &rng_);
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  if (renderer) {
+    cloud = renderer->render(camera_from_world, noise_, &rng_);
+  } else {  // nothing left in the scene: every pixel sees nothing
+    const CameraIntrinsics intrinsics;
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    cloud = pcl::PointCloud<pcl::PointXYZ>(static_cast<std::uint32_t>(intrinsics.width),
+                                           static_cast<std::uint32_t>(intrinsics.height),
+                                           pcl::PointXYZ(nan, nan, nan));
+    cloud.is_dense = false;
+  }
   if (visibility_radius_ > 0.0) {
-    const Eigen::Isometry3d camera_from_object = camera_from_world * world_from_object_;
+    const Eigen::Isometry3d camera_from_object = camera_from_world * world_from_object;
     cloud = cropToAnchors(cloud, camera_from_object, visibility_anchors_, visibility_radius_);
   }
   // A fresh message for every frame, handed over as a shared pointer and never touched again:
@@ -145,8 +180,13 @@ bool SimulatedDepthCameraRos::moveTo(
     } else if (request.mode == Request::MODE_DIRECTION) {
       const Eigen::Vector3d direction(request.direction.x, request.direction.y,
                                       request.direction.z);
-      world_from_camera = world_from_object_ *
-                          cameraFromObject(direction, request.distance, request.roll).inverse();
+      Eigen::Isometry3d world_from_object;
+      {
+        std::lock_guard<std::mutex> lock(mutex_);
+        world_from_object = parts_[0].world_from_part;
+      }
+      world_from_camera =
+          world_from_object * cameraFromObject(direction, request.distance, request.roll).inverse();
     } else {
       throw Error("Unknown mode " + std::to_string(int(request.mode)) +
                   ": use MODE_POSE (0) or MODE_DIRECTION (1).");
@@ -157,6 +197,47 @@ bool SimulatedDepthCameraRos::moveTo(
     }
     response.success = true;
     response.message = "Camera moved.";
+  } catch (const std::exception& error) {
+    response.success = false;
+    response.message = error.what();
+  }
+  return true;
+}
+
+bool SimulatedDepthCameraRos::placePart(
+    view_direction_classification::PlacePart::Request& request,
+    view_direction_classification::PlacePart::Response& response) {
+  try {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (request.part >= parts_.size()) {
+      const std::string distractors = std::to_string(parts_.size() - 1);
+      throw Error("No part " + std::to_string(request.part) + ": the scene has the object (0)" +
+                  (parts_.size() > 1 ? " and distractors 1 to " + distractors : " only") + ".");
+    }
+    std::vector<ScenePart> parts = parts_;
+    std::vector<bool> present = present_;
+    present[request.part] = request.present;
+    if (request.present) {
+      const auto& p = request.pose.position;
+      const auto& q = request.pose.orientation;
+      if (!Eigen::Vector3d(p.x, p.y, p.z).allFinite()) {
+        throw Error("The part's position is not finite.");
+      }
+      if (!isUnitQuaternion(Eigen::Vector4d(q.w, q.x, q.y, q.z), kRequestQuaternionTolerance)) {
+        throw Error("The part's orientation is not a unit quaternion.");
+      }
+      Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+      pose.translation() = Eigen::Vector3d(p.x, p.y, p.z);
+      pose.linear() = Eigen::Quaterniond(q.w, q.x, q.y, q.z).normalized().toRotationMatrix();
+      parts[request.part].world_from_part = pose;
+    }
+    // Built before anything changes: a renderer that cannot be built leaves the scene as it was.
+    std::shared_ptr<const DepthRenderer> renderer = sceneRenderer(parts, present, table_);
+    parts_ = std::move(parts);
+    present_ = std::move(present);
+    renderer_ = std::move(renderer);
+    response.success = true;
+    response.message = request.present ? "Part placed." : "Part taken away.";
   } catch (const std::exception& error) {
     response.success = false;
     response.message = error.what();

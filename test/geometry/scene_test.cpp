@@ -121,6 +121,36 @@ TEST(Scene, TableStandsUnderTheObjectsLowestPointAndEveryPartIsPlacedInTheFixedF
   EXPECT_GT(box_top, 1000);  // 5 x 5 cm at 0.5 m: ~ 2750 pixels
 }
 
+// The simulated camera keeps the table where it was placed while the object moves: the table is
+// a part of its own, the same one sceneMesh puts under the object.
+TEST(Scene, TheTableAsAPartIsSceneMeshsTableAndPartsMeshJoinsPartsInTheirPoses) {
+  Scene scene;
+  scene.object = {makeMug(), poseAt(Eigen::Vector3d(0.5, -0.2, 0.8), 1.0)};
+  scene.table_size = Eigen::Vector2d(1.0, 0.6);
+  const ScenePart table = tablePart(scene);
+  EXPECT_TRUE(
+      table.world_from_part.translation().isApprox(Eigen::Vector3d(0.5, -0.2, 0.8 - 0.0475), 1e-6));
+  const TriangleMesh whole = sceneMesh(scene);
+  const TriangleMesh joined = partsMesh({scene.object, table});
+  ASSERT_EQ(joined.vertices.size(), whole.vertices.size());
+  EXPECT_EQ(joined.triangles, whole.triangles);
+  for (std::size_t i = 0; i < whole.vertices.size(); ++i) {
+    EXPECT_TRUE(joined.vertices[i].isApprox(whole.vertices[i])) << i;
+  }
+  // The object moved 30 cm: the table part stays put.
+  ScenePart moved = scene.object;
+  moved.world_from_part.translation().x() += 0.3;
+  EXPECT_NEAR(partsMesh({moved, table}).bounds().min().x(), 0.0, 1e-6);
+  EXPECT_TRUE(partsMesh({}).vertices.empty());
+
+  Scene no_table = scene;
+  no_table.table_size.reset();
+  EXPECT_THROW(tablePart(no_table), Error);
+  ScenePart not_finite = scene.object;
+  not_finite.world_from_part.translation().x() = std::nan("");
+  EXPECT_THROW(partsMesh({not_finite}), Error);
+}
+
 TEST(Scene, DistractorDescriptionsNameBoxesCylindersOrMeshFiles) {
   EXPECT_NEAR(distractorMesh("box 0.1 0.2 0.3").signedVolume(), 0.006, 1e-9);
   EXPECT_NEAR(distractorMesh("cylinder 0.03 0.2").bounds().max().z(), 0.2, 1e-7);

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "shared_surfaces.h"
 #include "support/mug_scene.h"
 #include "support/quick_mug_model.h"
 #include "view_direction_classification/common/error.h"
@@ -188,6 +189,25 @@ TEST(SceneEstimator, BadInputIsSkippedOrRefused) {
   SceneEstimatorParameters parameters;
   parameters.association_distance = -1.0;
   EXPECT_THROW(SceneEstimator(ModelLibrary({{"mug", test::quickMugModel()}}), parameters), Error);
+}
+
+// Every candidate gets fresh estimators, whose refiners share their model's surfaces
+// (refinement/shared_surfaces.h) only while something holds them: the scene estimator does, so
+// the k-d trees and distance fields are not rebuilt for each candidate.
+TEST(SceneEstimator, KeepsEachModelsRefinementSurfaceAliveBetweenCandidates) {
+  const std::shared_ptr<const ModelBundle> bundle = test::quickMugModel();
+  const EstimatorParameters instance;
+  std::weak_ptr<const ModelSurface> surface;
+  {
+    const SceneEstimator estimator(ModelLibrary({{"mug", bundle}}), {});
+    // The returned pointer is dropped at once: only the scene estimator can keep it.
+    surface = sharedModelSurface(*bundle, instance.refinement_parameters.model_spacing);
+    EXPECT_FALSE(surface.expired());
+    std::weak_ptr<const ModelSurface> polish =
+        sharedModelSurface(*bundle, instance.refinement_parameters.polish_model_spacing);
+    EXPECT_FALSE(polish.expired());
+  }
+  EXPECT_TRUE(surface.expired());
 }
 
 }  // namespace

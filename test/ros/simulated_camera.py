@@ -1,6 +1,8 @@
 #!/usr/bin/python3
 """rostest: the simulated depth camera publishes organised clouds of the mug in its optical
-frame near the configured distance, with its tf; ~move_to moves the camera (and its tf)."""
+frame near the configured distance, with its tf; ~move_to moves the camera (and its tf);
+~place_part takes the mug away and puts it somewhere else (its cloud and ground-truth tf
+follow)."""
 import math
 import unittest
 
@@ -10,7 +12,8 @@ import rostest
 import sensor_msgs.msg
 import sensor_msgs.point_cloud2 as pc2
 import tf2_ros
-from view_direction_classification.srv import MoveCamera, MoveCameraRequest
+from view_direction_classification.srv import (MoveCamera, MoveCameraRequest, PlacePart,
+                                               PlacePartRequest)
 
 CAMERA = "simulated_depth_camera"
 OBJECT = (0.4, -0.1, 0.3)  # object_pose in the .test file
@@ -29,6 +32,8 @@ class SimulatedCamera(unittest.TestCase):
         cls.tf_listener = tf2_ros.TransformListener(cls.tf_buffer)
         rospy.wait_for_service(CAMERA + "/move_to", timeout=60)
         cls.move_to = rospy.ServiceProxy(CAMERA + "/move_to", MoveCamera)
+        rospy.wait_for_service(CAMERA + "/place_part", timeout=60)
+        cls.place_part = rospy.ServiceProxy(CAMERA + "/place_part", PlacePart)
 
     def camera_position(self, after):
         """The camera's position in world from the first tf stamped after `after`."""
@@ -93,6 +98,51 @@ class SimulatedCamera(unittest.TestCase):
         after = self.camera_position(rospy.Time.now())
         for got, want in zip(after, before):
             self.assertAlmostEqual(got, want, places=9)
+
+    def cloud_after(self, after):
+        """The first cloud stamped after `after` (a change shows from the next frame on)."""
+        while True:
+            cloud = rospy.wait_for_message(CAMERA + "/cloud", sensor_msgs.msg.PointCloud2, 30)
+            if cloud.header.stamp > after:
+                return cloud
+
+    def test_4_place_part_takes_the_mug_away_and_puts_it_elsewhere(self):
+        look = MoveCameraRequest(mode=MoveCameraRequest.MODE_DIRECTION, distance=0.6)
+        look.direction = geometry_msgs.msg.Vector3(1, 0, 0.5)
+        self.assertTrue(self.move_to(look).success)
+        away = self.place_part(PlacePartRequest(part=0, present=False))
+        self.assertTrue(away.success, away.message)
+        # No table in this scene: with the mug gone the camera sees nothing at all.
+        self.assertEqual(finite_points(self.cloud_after(rospy.Time.now())), [])
+
+        back = PlacePartRequest(part=0, present=True)
+        back.pose.position = geometry_msgs.msg.Point(0.4, 0.0, 0.3)  # 10 cm along y
+        back.pose.orientation.w = 1.0
+        self.assertTrue(self.place_part(back).success)
+        # The camera still looks at the old place (the mug 10 cm to its side) ...
+        self.assertGreater(len(finite_points(self.cloud_after(rospy.Time.now()))), 100)
+        # ... and the ground-truth tf is the new pose.
+        deadline = rospy.Time.now() + rospy.Duration(10)
+        while rospy.Time.now() < deadline:
+            t = self.tf_buffer.lookup_transform("world", "object_ground_truth", rospy.Time(0))
+            if abs(t.transform.translation.y) < 1e-9:
+                break
+            rospy.sleep(0.05)
+        self.assertAlmostEqual(t.transform.translation.y, 0.0, places=9)
+
+    def test_5_place_part_refuses_invalid_requests_and_keeps_the_scene(self):
+        no_such_part = PlacePartRequest(part=1, present=False)  # this scene has no distractor
+        not_finite = PlacePartRequest(part=0, present=True)
+        not_finite.pose.position.x = float("nan")
+        not_finite.pose.orientation.w = 1.0
+        zero_quaternion = PlacePartRequest(part=0, present=True)
+        for request in (no_such_part, not_finite, zero_quaternion):
+            response = self.place_part(request)
+            self.assertFalse(response.success)
+            self.assertTrue(response.message)
+        self.assertIn("No part 1", self.place_part(no_such_part).message)
+        # The mug is still where test 4 put it, and still in view.
+        self.assertGreater(len(finite_points(self.cloud_after(rospy.Time.now()))), 100)
 
 
 if __name__ == "__main__":

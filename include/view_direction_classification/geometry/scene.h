@@ -31,6 +31,11 @@ struct Scene {
 // Throws vdc::Error for an object without vertices.
 double tableHeight(const Scene& scene);
 
+// The table as a part of its own (a rectangle of table_size at tableHeight, centred under the
+// object's origin), so that it can stay where it is while the object moves. Throws vdc::Error for
+// a scene without a table or an object without vertices.
+ScenePart tablePart(const Scene& scene);
+
 // Every part, and the table if any, in the fixed frame as one mesh (for DepthRenderer with
 // camera_from_world poses). Throws vdc::Error for a non-finite pose or an invalid table size.
 TriangleMesh sceneMesh(const Scene& scene);
@@ -41,5 +46,8 @@ TriangleMesh sceneMesh(const Scene& scene);
 // (primitive_meshes.h), or else the path of a mesh file (loadMesh). Throws vdc::Error naming the
 // description if it cannot be parsed or loaded.
 TriangleMesh distractorMesh(const std::string& description);
+
+// The parts in the fixed frame as one mesh. Throws vdc::Error for a non-finite pose.
+TriangleMesh partsMesh(const std::vector<ScenePart>& parts);
 
 }  // namespace vdc

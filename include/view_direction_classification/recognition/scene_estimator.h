@@ -247,6 +247,8 @@ class SceneEstimator {
   std::unique_ptr<ShapeAlternative> shapes_;
   std::unique_ptr<InstancePresence> presence_;
   std::unique_ptr<InstanceOverlap> overlap_;
+  // Per library model: an estimator that fuses nothing and holds its model's surfaces alive.
+  std::vector<std::unique_ptr<const OrientationEstimator>> surface_holders_;
   std::vector<ObjectInstance> instances_;
   UnknownObjects unknowns_;
   std::vector<int> instances_named_;  // per model: instances named so far

@@ -48,8 +48,8 @@ class ModelSurface {
   // (nearSymmetryAxes() in model_surface.cpp), then the two orthogonal to it that meet it in the
   // middle of the surface, the first of them the one a half turn about which moves the surface
   // least (half_turn_axes.h).
-  // Found on first use and kept; thread-safe. The scene layer builds dozens of surfaces per view
-  // (polish surfaces, surfaces freed between candidates), most never restarted from.
+  // Found on first use and kept; thread-safe. Refinement builds surfaces that are never
+  // restarted from (the polish's facing parts, built per view).
   const std::vector<Eigen::ParametrizedLine<double, 3>>& symmetryAxes() const;
 
  private:
