@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "piece_groups.h"
+#include "seen_through.h"
 #include "view_direction_classification/common/error.h"
 #include "view_direction_classification/estimation/verification_scene.h"
 #include "view_direction_classification/recognition/instance_association.h"
@@ -23,6 +24,21 @@ using Clock = std::chrono::steady_clock;
 // few percent where a handle reaches into the other's hull; a mug moved 6 cm shares 0.13-0.25,
 // 4 cm 0.36-0.47 (instance_overlap_test.cpp).
 constexpr double kSameObjectOverlap = 0.1;
+
+// [m] The camera sees past an unknown object's centroid by at least this where the object is
+// gone: the centroid of what was seen of it lies inside it, centimetres above the table.
+constexpr double kEmptyPlaceDepth = 0.02;
+
+// Whether an unknown object's place is empty on this frame: no candidate within
+// association_distance of its centroid (fixed frame), and the camera sees through the centroid.
+bool placeEmptied(const Eigen::Vector3d& centroid, const std::vector<CandidateOutcome>& candidates,
+                  const SceneDepth& scene, const Eigen::Isometry3d& camera_from_world,
+                  double association_distance) {
+  for (const CandidateOutcome& candidate : candidates) {
+    if ((candidate.centroid_world - centroid).norm() < association_distance) return false;
+  }
+  return seenThrough(scene, (camera_from_world * centroid).cast<float>(), kEmptyPlaceDepth);
+}
 
 double millisecondsSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -195,6 +211,11 @@ SceneUpdate SceneEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
 
   std::vector<FrameCandidate> candidates =
       frameCandidates(cloud, segments, world_from_camera, &result);
+  const Eigen::Isometry3d camera_from_world = world_from_camera.inverse();
+  unknowns_.forgetIf([&](const Eigen::Vector3d& centroid) {
+    return placeEmptied(centroid, result.candidates, scene, camera_from_world,
+                        parameters_.association_distance);
+  });
   associate(candidates, result);
   std::vector<int> associated;  // ids: updateAssignedInstances may drop instances
   for (const FrameCandidate& candidate : candidates) {

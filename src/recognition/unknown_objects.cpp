@@ -89,4 +89,10 @@ void UnknownObjects::remember(const Eigen::Vector3d& centroid, const Eigen::Vect
   objects_.push_back(std::move(object));
 }
 
+void UnknownObjects::forgetIf(const std::function<bool(const Eigen::Vector3d&)>& gone) {
+  objects_.erase(std::remove_if(objects_.begin(), objects_.end(),
+                                [&](const Object& object) { return gone(object.centroid); }),
+                 objects_.end());
+}
+
 }  // namespace vdc

@@ -2,6 +2,7 @@
 
 #include <Eigen/Core>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,10 @@ class UnknownObjects {
   // more try of it) or is a new one.
   void remember(const Eigen::Vector3d& centroid, const Eigen::Vector3d& sides,
                 const Eigen::Vector3d& camera_position);
+  // Forgets the unknown objects whose place `gone` (given an object's centroid, fixed frame)
+  // says is empty now: what is put there later is a new thing to try. Without it the places
+  // piled up for the estimator's life, and a mug put down where a box had stood was never tried.
+  void forgetIf(const std::function<bool(const Eigen::Vector3d&)>& gone);
   void clear() { objects_.clear(); }
   std::size_t size() const { return objects_.size(); }
 
