@@ -21,6 +21,8 @@ constexpr double kSampleSpacing = 0.004;
 // camera-facing samples: a place mostly hidden or mostly outside the image tells nothing, and a
 // few rays past an occluder's edge must not decide.
 constexpr double kMinJudgedFraction = 0.5;
+// Nor may a handful of judged samples decide, when the support explains nearly all the others.
+constexpr int kMinJudgedSamples = 20;
 // Of the judged samples, this fraction free makes the frame one of absence. Not all of a removed
 // object's samples come out free: near its foot the table lies within the tolerance of where the
 // surface should be (about the lowest centimetre of a mug seen from 40 degrees up). And an object
@@ -57,7 +59,8 @@ void nearestDepths(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& points,
 
 PresenceEvidence presenceEvidence(const PresenceCheck& check) {
   const int judged = check.seen + check.free;
-  if (check.predicted == 0 || judged < kMinJudgedFraction * check.predicted) {
+  const int telling = check.predicted - check.on_support;
+  if (judged < kMinJudgedSamples || judged < kMinJudgedFraction * telling) {
     return PresenceEvidence::kNone;
   }
   if (check.free >= kMinFreeFraction * judged) return PresenceEvidence::kAbsent;
@@ -118,19 +121,24 @@ PresenceCheck InstancePresence::check(int model, const Eigen::Isometry3d& world_
   const SceneDepth depth = indexed ? scene : indexRays(scene);
   // The ray radius of verification's predicted half: the samples' neighbourhood.
   const double ray_radius = std::max(0.004, 2.0 * surface.spacing());
-  std::vector<float> observed(samples.size(), std::numeric_limits<float>::infinity());
-  // What the camera saw on a ray is the nearest of the two: an object or the table.
+  const float none = std::numeric_limits<float>::infinity();
+  std::vector<float> off_support(samples.size(), none), support(samples.size(), none);
   nearestDepths(depth.occluders, depth.occluder_rays, samples, rays, ray_radius, nearest_z,
-                &observed);
+                &off_support);
   nearestDepths(depth.supports, depth.support_rays, samples, rays, ray_radius, nearest_z,
-                &observed);
+                &support);
   for (std::size_t i = 0; i < samples.size(); ++i) {
-    if (!std::isfinite(observed[i])) continue;
-    const double tolerance = freeSpaceTolerance(observed[i]);
-    if (observed[i] < samples[i].z() - tolerance) {
+    // What the camera saw on a ray is the nearest of the two: an object or the table.
+    const bool table_nearest = support[i] < off_support[i];
+    const float observed = std::min(off_support[i], support[i]);
+    if (!std::isfinite(observed)) continue;
+    const double tolerance = freeSpaceTolerance(observed);
+    if (observed < samples[i].z() - tolerance) {
       ++result.hidden;
-    } else if (observed[i] > samples[i].z() + tolerance) {
+    } else if (observed > samples[i].z() + tolerance) {
       ++result.free;
+    } else if (table_nearest) {
+      ++result.on_support;
     } else {
       ++result.seen;
     }

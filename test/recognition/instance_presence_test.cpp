@@ -336,6 +336,22 @@ TEST_F(PresenceCheckTest, TheMugAtItsPlaceIsSeenItsEmptyPlaceFreeAndItsHiddenPla
   EXPECT_GT(hidden.hidden, hidden.predicted / 2);
 }
 
+// Seen from nearly straight above, most of a mug's camera-facing samples are its inside floor,
+// a few millimetres above the table: where the mug was taken away the table lies within the
+// tolerance of them. They must not count as the mug seen (a patrolled mug's removal went
+// unnoticed for three passes so), and the rim's samples, seen free, tell.
+TEST_F(PresenceCheckTest, FromAboveTheTableWhereTheMugsFloorWasIsNoEvidenceAndItsRimTells) {
+  const Eigen::Vector3d above(0.15, 0.1, 1.0);
+  const PresenceCheck there = checkAtA(tableWith({mugAt(kMugAtA)}), above);
+  EXPECT_EQ(there.evidence, PresenceEvidence::kSeen);
+  const PresenceCheck away = checkAtA(tableWith({}), above);
+  EXPECT_GT(away.on_support, away.predicted / 3);
+  EXPECT_EQ(away.seen, 0);
+  EXPECT_EQ(away.evidence, PresenceEvidence::kAbsent)
+      << "predicted " << away.predicted << " free " << away.free << " on support "
+      << away.on_support;
+}
+
 // Rays index points by their direction, not by their pixel: the same answers without the grid.
 TEST_F(PresenceCheckTest, AnUnorganisedCloudGivesTheSameAnswers) {
   EXPECT_EQ(checkAtA(tableWith({mugAt(kMugAtA)}), kView0, true).evidence, PresenceEvidence::kSeen);
@@ -352,12 +368,13 @@ TEST_F(PresenceCheckTest, AFrameWithoutDepthThereIsNoEvidence) {
   EXPECT_EQ(check.evidence, PresenceEvidence::kNone);
 }
 
-PresenceCheck counted(int predicted, int seen, int free, int hidden = 0) {
+PresenceCheck counted(int predicted, int seen, int free, int hidden = 0, int on_support = 0) {
   PresenceCheck check;
   check.predicted = predicted;
   check.seen = seen;
   check.free = free;
   check.hidden = hidden;
+  check.on_support = on_support;
   return check;
 }
 
@@ -374,6 +391,15 @@ TEST(PresenceEvidence, APlaceMostlyHiddenOrOutOfViewIsNoEvidence) {
   EXPECT_EQ(presenceEvidence(counted(1000, 0, 246)), PresenceEvidence::kNone);
   EXPECT_EQ(presenceEvidence(counted(1000, 100, 100, 800)), PresenceEvidence::kNone);
   EXPECT_EQ(presenceEvidence(counted(0, 0, 0)), PresenceEvidence::kNone);
+}
+
+// Samples the table explains are left out of the share that must be judged, but a handful of
+// judged samples never decide.
+TEST(PresenceEvidence, SamplesOnTheSupportAreLeftOutButAFewJudgedNeverDecide) {
+  EXPECT_EQ(presenceEvidence(counted(373, 0, 119, 0, 254)), PresenceEvidence::kAbsent);
+  EXPECT_EQ(presenceEvidence(counted(373, 119, 0, 0, 254)), PresenceEvidence::kSeen);
+  EXPECT_EQ(presenceEvidence(counted(373, 0, 119, 130, 124)), PresenceEvidence::kNone);
+  EXPECT_EQ(presenceEvidence(counted(373, 0, 19, 0, 354)), PresenceEvidence::kNone);
 }
 
 TEST(InstancePresenceParameters, BadValuesAreRefusedNamingThem) {

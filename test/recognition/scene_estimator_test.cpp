@@ -214,7 +214,9 @@ TEST(SceneEstimator, AMugPutWhereAnUnknownBoxWasTakenAwayIsIdentified) {
     const SceneUpdate update = estimator.update(
         renderer.render(pose.inverse(), DepthNoiseModel{true}, &rng), pose, 1.0 * v);
     ASSERT_TRUE(update.segmented) << v;
-    if (v == 0) ASSERT_TRUE(estimator.instances().empty()) << describe(estimator, update);
+    if (v == 0) {
+      ASSERT_TRUE(estimator.instances().empty()) << describe(estimator, update);
+    }
   }
   EXPECT_NE(instanceAt(estimator, kFirstMug.translation()), nullptr);
 }

@@ -30,14 +30,19 @@ struct PresenceCheck {
   int seen = 0;       // a scene point within the free-space tolerance of the sample's depth
   int free = 0;       // the nearest scene point on the ray lies clearly behind the sample
   int hidden = 0;     // ... clearly in front of it: something hides the place
-  // predicted - seen - free - hidden: no scene point near the ray (outside the image, NaN, out of
-  // the sensor's range).
-  int noData() const { return predicted - seen - free - hidden; }
+  // The nearest point on the ray is the support's, within the tolerance of the sample's depth: the
+  // table looks the same whether the object stands there or not (its foot; a mug's inside floor
+  // seen from above), so these say nothing.
+  int on_support = 0;
+  // predicted - seen - free - hidden - on_support: no scene point near the ray (outside the
+  // image, NaN, out of the sensor's range).
+  int noData() const { return predicted - seen - free - hidden - on_support; }
 };
 
-// What the check's counts say: no evidence when under half the samples were judged (seen or
-// free); absence when at least 60 % of the judged were free, the surface seen when at most 25 %
-// were; in between nothing (a place half free is not seen occupied).
+// What the check's counts say: no evidence when under half the samples that could tell (those
+// not on the support) were judged (seen or free), or fewer than a few; absence when at least 60 %
+// of the judged were free, the surface seen when at most 25 % were; in between nothing (a place
+// half free is not seen occupied).
 PresenceEvidence presenceEvidence(const PresenceCheck& check);
 
 enum class InstanceState {
