@@ -125,8 +125,7 @@ PresenceCheck InstancePresence::check(int model, const Eigen::Isometry3d& world_
   std::vector<float> off_support(samples.size(), none), support(samples.size(), none);
   nearestDepths(depth.occluders, depth.occluder_rays, samples, rays, ray_radius, nearest_z,
                 &off_support);
-  nearestDepths(depth.supports, depth.support_rays, samples, rays, ray_radius, nearest_z,
-                &support);
+  nearestDepths(depth.supports, depth.support_rays, samples, rays, ray_radius, nearest_z, &support);
   for (std::size_t i = 0; i < samples.size(); ++i) {
     // What the camera saw on a ray is the nearest of the two: an object or the table.
     const bool table_nearest = support[i] < off_support[i];
@@ -145,6 +144,17 @@ PresenceCheck InstancePresence::check(int model, const Eigen::Isometry3d& world_
   }
   result.evidence = presenceEvidence(result);
   return result;
+}
+
+void InstancePresence::checkPlaces(std::vector<ObjectInstance>& instances, const SceneDepth& scene,
+                                   const Eigen::Isometry3d& world_from_camera) const {
+  for (ObjectInstance& instance : instances) {
+    if (instance.presence.state == InstanceState::kGone) continue;
+    const std::optional<Eigen::Isometry3d> pose = believedPose(*instance.estimator);
+    if (pose) {
+      instance.presence.last_check = check(instance.model, *pose, scene, world_from_camera);
+    }
+  }
 }
 
 void InstancePresence::record(const PresenceCheck& check, std::optional<double> time,
@@ -169,8 +179,9 @@ std::vector<int> InstancePresence::observe(std::vector<ObjectInstance>& instance
     Presence& presence = instance.presence;
     const bool candidate_there =
         std::find(associated.begin(), associated.end(), instance.id) != associated.end();
-    // A gone instance stays gone until a candidate is associated with it or it is found moved.
-    if (!candidate_there && presence.state == InstanceState::kGone) continue;
+    // A gone instance stays gone until it is found moved (or put back): the scene estimator
+    // associates no candidate with it.
+    if (presence.state == InstanceState::kGone) continue;
     const std::optional<Eigen::Isometry3d> pose = believedPose(*instance.estimator);
     const PresenceCheck place =
         pose ? check(instance.model, *pose, scene, world_from_camera) : PresenceCheck{};
@@ -183,7 +194,7 @@ std::vector<int> InstancePresence::observe(std::vector<ObjectInstance>& instance
     // else (a neighbour cut by the touching split, what stands there now): it neither keeps
     // the instance present nor brings a gone one back. With a camera that passes along the same
     // path, such an instance is not refined again (no new view) and nothing else would notice.
-    if (presence.state == InstanceState::kGone || !pose) continue;
+    if (!pose) continue;
     record(place, time, &presence);
     if (presence.state == InstanceState::kGone) marked_gone.push_back(instance.id);
   }

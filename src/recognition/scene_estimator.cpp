@@ -216,6 +216,7 @@ SceneUpdate SceneEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
     return placeEmptied(centroid, result.candidates, scene, camera_from_world,
                         parameters_.association_distance);
   });
+  presence_->checkPlaces(instances_, scene, world_from_camera);
   associate(candidates, result);
   std::vector<int> associated;  // ids: updateAssignedInstances may drop instances
   for (const FrameCandidate& candidate : candidates) {
@@ -303,20 +304,36 @@ void SceneEstimator::associate(std::vector<FrameCandidate>& candidates,
     taking_part.push_back(c);
     centroids.push_back(result.candidates[c].centroid_world);
   }
-  for (const ObjectInstance& instance : instances_) {
-    instance_centroids.push_back(instance.centroid_world);
+  std::vector<int> present;  // indices into instances_
+  for (std::size_t i = 0; i < instances_.size(); ++i) {
+    if (outOfPlace(instances_[i])) continue;
+    present.push_back(static_cast<int>(i));
+    instance_centroids.push_back(instances_[i].centroid_world);
   }
   const std::vector<int> instance_of =
       associateCandidates(centroids, instance_centroids, parameters_.association_distance);
   for (std::size_t k = 0; k < taking_part.size(); ++k) {
     FrameCandidate& candidate = candidates[taking_part[k]];
-    candidate.instance = instance_of[k] >= 0 ? instance_of[k] : explainingInstance(candidate);
+    candidate.instance = instance_of[k] >= 0 ? present[static_cast<std::size_t>(instance_of[k])]
+                                             : explainingInstance(candidate);
   }
+}
+
+// Gone instances and those whose place this frame shows free (checkPlaces; observe keeps
+// last_check so for the rest of the frame) take no candidate by nearness and explain none: what
+// stands there is something else, the object put back or the object moved and turned, and
+// identification tells which (sameObject, instanceFor). Taken by a gone elephant's instance, a
+// mug put down at its place was never identified, pass after pass; fused into its old belief, a
+// mug moved 5 cm and turned kept its old pose for views.
+bool SceneEstimator::outOfPlace(const ObjectInstance& instance) {
+  return instance.presence.state == InstanceState::kGone ||
+         instance.presence.last_check.evidence == PresenceEvidence::kAbsent;
 }
 
 int SceneEstimator::explainingInstance(const FrameCandidate& candidate) const {
   for (std::size_t i = 0; i < instances_.size(); ++i) {
     const ObjectInstance& instance = instances_[i];
+    if (outOfPlace(instance)) continue;
     const std::optional<Eigen::Isometry3d> world_from_object = believedPose(*instance.estimator);
     if (!world_from_object) continue;
     if (explanations_[instance.model]->explainedFraction(candidate.points_world, *world_from_object,

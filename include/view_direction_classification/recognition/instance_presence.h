@@ -75,6 +75,12 @@ class InstancePresence {
   PresenceCheck check(int model, const Eigen::Isometry3d& world_from_object,
                       const SceneDepth& scene, const Eigen::Isometry3d& world_from_camera) const;
 
+  // Before a segmented frame's association: each instance that is not gone and has a pose gets
+  // this frame's check as its last_check (counting nothing). The scene estimator associates no
+  // candidate with an instance whose place the frame shows free: its pose is out of date.
+  void checkPlaces(std::vector<ObjectInstance>& instances, const SceneDepth& scene,
+                   const Eigen::Isometry3d& world_from_camera) const;
+
   // After a segmented frame's association: the instances whose ids are in `associated` were seen
   // (present again, their count reset); every other one with a position is checked against the
   // frame and marked gone after absent_views frames of absence in a row. Returns the ids it

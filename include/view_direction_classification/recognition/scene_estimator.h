@@ -186,6 +186,8 @@ class SceneEstimator {
                        CandidateOutcome* outcome) const;
   // Each candidate's known instance: the nearest by centroid, else the one it is a part of.
   void associate(std::vector<FrameCandidate>& candidates, const SceneUpdate& result) const;
+  // Whether an instance is out of its believed place on this frame (gone, or its place seen free).
+  static bool outOfPlace(const ObjectInstance& instance);
   // The index of the instance whose pose explains the candidate (a part of it), or -1.
   int explainingInstance(const FrameCandidate& candidate) const;
   // Each instance fuses the union of its candidates' points.
