@@ -319,8 +319,8 @@ void SceneEstimator::associate(std::vector<FrameCandidate>& candidates,
   }
 }
 
-// Gone instances and those whose place this frame shows free (checkPlaces; observe keeps
-// last_check so for the rest of the frame) take no candidate by nearness and explain none: what
+// Gone instances and those whose place this frame shows free (checkPlaces, and observe after
+// it, set last_check from this frame) take no candidate by nearness and explain none: what
 // stands there is something else, the object put back or the object moved and turned, and
 // identification tells which (sameObject, instanceFor). Taken by a gone elephant's instance, a
 // mug put down at its place was never identified, pass after pass; fused into its old belief, a

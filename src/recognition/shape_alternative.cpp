@@ -56,8 +56,8 @@ void explain(std::size_t i, float distance, double tolerance, std::vector<char>*
 }
 
 // RANSAC for one plane of `model` type about `axis` (PCL: PARALLEL_PLANE contains the axis)
-// among the points not yet explained. Marks its inliers
-// explained; returns the plane's unit normal (zero when none was found).
+// among the points not yet explained. Marks its inliers explained; returns the plane's unit
+// normal (zero when none was found).
 Eigen::Vector3f explainByPlane(const Cloud::Ptr& cloud, int model, const Eigen::Vector3f& axis,
                                double tolerance, std::vector<char>* explained) {
   auto remaining = pcl::make_shared<pcl::Indices>();
@@ -111,7 +111,8 @@ std::size_t bestOffset(const Cloud& cloud, const pcl::Indices& indices,
 // normal is a few degrees off on a small face). Its normal is searched about `up` in half-degree
 // steps around `across`, and for each its offset (bestOffset): a deterministic search over
 // the two unknowns, where RANSAC printed an error line for every shape without such a face (a
-// can, a mug: a hundred in half an hour of the patrol soak). Marks its inliers explained.
+// plate, a spool's flange: a hundred in half an hour of the patrol soak). Marks its inliers
+// explained.
 void explainBySquareFace(const Cloud& cloud, const Eigen::Vector3f& up,
                          const Eigen::Vector3f& across, double tolerance,
                          std::vector<char>* explained) {
