@@ -120,7 +120,9 @@ void explainBySquareFace(const Cloud& cloud, const Eigen::Vector3f& up,
   for (std::size_t i = 0; i < cloud.size(); ++i) {
     if (!(*explained)[i]) remaining.push_back(static_cast<int>(i));
   }
-  if (!spreadsInTwoDirections(cloud, remaining, kMinFitSpread)) return;
+  // Empty indices would mean the whole cloud to spreadsInTwoDirections (PCL's convention):
+  // nothing is left once the first face explained everything (a flat disc seen face-on).
+  if (remaining.empty() || !spreadsInTwoDirections(cloud, remaining, kMinFitSpread)) return;
   constexpr double kStep = 0.5 * M_PI / 180.0;
   const int steps = static_cast<int>(std::round(kTiltTolerance / kStep));
   std::size_t best_count = 0;
