@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <map>
+#include <set>
 #include <unordered_map>
 
 namespace vdc::scene {
@@ -22,9 +23,56 @@ namespace {
 
 using Supervoxels = std::map<std::uint32_t, pcl::Supervoxel<pcl::PointXYZ>::Ptr>;
 
-// LCCP's own merging of tiny segments into their largest neighbour [supervoxels]: noise makes
-// single supervoxels at edges look concave.
-constexpr std::uint32_t kMinSegmentSupervoxels = 3;
+// Segments of at most this many supervoxels join their largest neighbour (LCCP's own rule): noise
+// makes single supervoxels at edges look concave.
+constexpr std::size_t kSmallSegmentSupervoxels = 3;
+
+// Per supervoxel label, its segment's label, after the segments of at most
+// kSmallSegmentSupervoxels supervoxels joined their largest neighbour (ties: the lower label), the
+// smallest first, until none is left that has a neighbour. LCCP would do the same
+// (setMinSegmentSize), but it walks its graph (boost setS vertices) in the order of their heap
+// addresses: the same cloud came out cut differently depending on what the process had
+// allocated before (a scene's candidates in the scene evaluation changed with the scenes run
+// before it). LCCP numbers its segments in that order too, so each is first named after its
+// lowest supervoxel label (supervoxel labels do not depend on it; never 0), and every order
+// here is those names'.
+std::map<std::uint32_t, std::uint32_t> joinSmallSegments(
+    std::map<std::uint32_t, std::uint32_t> segment_of,
+    const std::multimap<std::uint32_t, std::uint32_t>& adjacency) {
+  std::map<std::uint32_t, std::uint32_t> name;  // LCCP's segment label -> its lowest supervoxel
+  for (const auto& [supervoxel, segment] : segment_of) name.emplace(segment, supervoxel);
+  for (auto& entry : segment_of) entry.second = name[entry.second];
+  std::map<std::uint32_t, std::size_t> size;
+  for (const auto& [supervoxel, segment] : segment_of) ++size[segment];
+  for (;;) {
+    std::set<std::pair<std::size_t, std::uint32_t>> small;  // (size, label): smallest first
+    for (const auto& [segment, count] : size) {
+      if (count <= kSmallSegmentSupervoxels) small.emplace(count, segment);
+    }
+    bool joined = false;
+    for (const auto& [count, segment] : small) {
+      std::set<std::uint32_t> neighbours;
+      for (const auto& [a, b] : adjacency) {
+        const auto from = segment_of.find(a), to = segment_of.find(b);
+        if (from == segment_of.end() || to == segment_of.end()) continue;
+        if (from->second == segment && to->second != segment) neighbours.insert(to->second);
+      }
+      if (neighbours.empty()) continue;
+      std::uint32_t largest = *neighbours.begin();
+      for (const std::uint32_t neighbour : neighbours) {
+        if (size[neighbour] > size[largest]) largest = neighbour;
+      }
+      for (auto& entry : segment_of) {
+        if (entry.second == segment) entry.second = largest;
+      }
+      size[largest] += count;
+      size.erase(segment);
+      joined = true;
+      break;  // the sizes changed: choose again
+    }
+    if (!joined) return segment_of;
+  }
+}
 
 // The LCCP label of each point of `points` (0: in no supervoxel). Empty if there are fewer than
 // two supervoxels (nothing to split).
@@ -52,14 +100,19 @@ std::vector<std::uint32_t> convexPartLabels(const pcl::PointCloud<pcl::PointXYZ>
   lccp.setSmoothnessCheck(true, voxel, seed, 0.1f);
   // Plain convexity: extended convexity (k = 1) also cuts single boxes along their edges.
   lccp.setKFactor(0);
-  lccp.setMinSegmentSize(kMinSegmentSupervoxels);
+  lccp.setMinSegmentSize(0);  // joinSmallSegments
   lccp.setInputSupervoxels(supervoxels, adjacency);
   lccp.segment();
+  std::map<std::uint32_t, std::uint32_t> segment_of;
+  lccp.getSupervoxelToSegmentMap(segment_of);
+  segment_of = joinSmallSegments(std::move(segment_of), adjacency);
 
   const pcl::PointCloud<pcl::PointXYZL>::Ptr labelled = supervoxel_clustering.getLabeledCloud();
-  lccp.relabelCloud(*labelled);
-  std::vector<std::uint32_t> labels(labelled->size());
-  for (std::size_t k = 0; k < labelled->size(); ++k) labels[k] = (*labelled)[k].label;
+  std::vector<std::uint32_t> labels(labelled->size(), 0);
+  for (std::size_t k = 0; k < labelled->size(); ++k) {
+    const auto found = segment_of.find((*labelled)[k].label);
+    if (found != segment_of.end()) labels[k] = found->second;  // 0: in no supervoxel
+  }
   return labels;
 }
 
