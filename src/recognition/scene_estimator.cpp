@@ -369,7 +369,7 @@ void SceneEstimator::updateAssignedInstances(std::vector<FrameCandidate>& candid
     instance.last_seen = time;
     ++instance.frames_seen;
     if (update.outcome == FrameOutcome::kFused) {
-      weighIdentity(instance, update, shapes_->penalties(points, up)[instance.model],
+      weighIdentity(instance, update, shapes_->penalties(points, up, scene)[instance.model],
                     world_from_camera);
     }
   }
@@ -533,9 +533,9 @@ int SceneEstimator::identify(const FrameCandidate& candidate, const SceneDepth& 
                              const Eigen::Isometry3d& world_from_camera, std::optional<double> time,
                              CandidateOutcome* outcome, bool remember_unknown) {
   // A detector's class is the evidence against an unknown simple shape: no penalty then.
-  const std::vector<double> penalties = candidate.allowed.empty()
-                                            ? shapes_->penalties(candidate.points, candidate.up)
-                                            : std::vector<double>();
+  const std::vector<double> penalties =
+      candidate.allowed.empty() ? shapes_->penalties(candidate.points, candidate.up, scene)
+                                : std::vector<double>();
   Identification identification = identifyCandidate(
       library_, parameters_.instance, candidate.points, outcome->sides, std::move(scene),
       world_from_camera, time, parameters_.identification, penalties, candidate.allowed);

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "face_free_space.h"
 #include "view_direction_classification/geometry/point_spread.h"
 
 namespace vdc {
@@ -112,8 +113,8 @@ std::size_t bestOffset(const Cloud& cloud, const pcl::Indices& indices,
 // steps around `across`, and for each its offset (bestOffset): a deterministic search over
 // the two unknowns, where RANSAC printed an error line for every shape without such a face (a
 // plate, a spool's flange: a hundred in half an hour of the patrol soak). Marks its inliers
-// explained.
-void explainBySquareFace(const Cloud& cloud, const Eigen::Vector3f& up,
+// explained; returns whether there was such a face.
+bool explainBySquareFace(const Cloud& cloud, const Eigen::Vector3f& up,
                          const Eigen::Vector3f& across, double tolerance,
                          std::vector<char>* explained) {
   pcl::Indices remaining;
@@ -122,7 +123,7 @@ void explainBySquareFace(const Cloud& cloud, const Eigen::Vector3f& up,
   }
   // Empty indices would mean the whole cloud to spreadsInTwoDirections (PCL's convention):
   // nothing is left once the first face explained everything (a flat disc seen face-on).
-  if (remaining.empty() || !spreadsInTwoDirections(cloud, remaining, kMinFitSpread)) return;
+  if (remaining.empty() || !spreadsInTwoDirections(cloud, remaining, kMinFitSpread)) return false;
   constexpr double kStep = 0.5 * M_PI / 180.0;
   const int steps = static_cast<int>(std::round(kTiltTolerance / kStep));
   std::size_t best_count = 0;
@@ -134,11 +135,12 @@ void explainBySquareFace(const Cloud& cloud, const Eigen::Vector3f& up,
     const std::size_t count = bestOffset(cloud, remaining, normal, tolerance, &offset);
     if (count > best_count) best_count = count, best_offset = offset, best_normal = normal;
   }
-  if (best_count < 3) return;  // no face: RANSAC's three points
+  if (best_count < 3) return false;  // no face: RANSAC's three points
   for (int i : remaining) {
     const float distance = std::abs(best_normal.dot(cloud[i].getVector3fMap()) - best_offset);
     explain(static_cast<std::size_t>(i), distance, tolerance, explained);
   }
+  return true;
 }
 
 // The explained share, weighted as the verifier weighs a model's inliers
@@ -172,17 +174,51 @@ void explainTop(const Cloud& cloud, const Eigen::Vector3f& up, double tolerance,
   }
 }
 
-// Up to two perpendicular upright faces and a horizontal top: what a camera sees of a box.
-double boxFraction(const Cloud::Ptr& cloud, const Eigen::Vector3f& up, double tolerance) {
+// The points (fit units) whose level in `explained` rose from `before`'s.
+std::vector<Eigen::Vector3f> newlyExplained(const Cloud& cloud, const std::vector<char>& before,
+                                            const std::vector<char>& explained) {
+  std::vector<Eigen::Vector3f> points;
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    if (explained[i] > before[i]) points.push_back(cloud[i].getVector3fMap());
+  }
+  return points;
+}
+
+// How the box's faces are judged against the scene (empty scene: not judged).
+struct FaceCheck {
+  const SceneDepth& scene;
+  double free_space_tolerance;  // [m]
+};
+
+// Up to two perpendicular upright faces and a horizontal top: what a camera sees of a box. Minus
+// the share of each face's rectangle that the scene's depth shows free (judgeFaceRectangle), as
+// a model's score is lowered by its contradicted predictions: without it the flat face of a disc
+// (a spool's flange) is a box's as much as the spool's.
+double boxFraction(const Cloud::Ptr& cloud, const Eigen::Vector3f& up, double tolerance,
+                   const FaceCheck& check) {
   std::vector<char> explained(cloud->size(), 0);
+  FaceJudgement faces;
+  const auto judge = [&](const std::vector<char>& before, const Eigen::Vector3f& normal) {
+    const FaceJudgement face =
+        judgeFaceRectangle(newlyExplained(*cloud, before, explained), normal, up, kFitScale,
+                           check.scene, check.free_space_tolerance);
+    faces.samples += face.samples;
+    faces.seen_through += face.seen_through;
+  };
+  std::vector<char> before = explained;
   const Eigen::Vector3f first =
       explainByPlane(cloud, pcl::SACMODEL_PARALLEL_PLANE, up, tolerance, &explained);
   if (!first.isZero()) {
+    judge(before, first);
     // The second face's normal is horizontal and square to the first's.
-    explainBySquareFace(*cloud, up, up.cross(first).normalized(), tolerance, &explained);
+    before = explained;
+    const Eigen::Vector3f across = up.cross(first).normalized();
+    if (explainBySquareFace(*cloud, up, across, tolerance, &explained)) judge(before, across);
   }
   explainTop(*cloud, up, tolerance, &explained);
-  return fractionOf(explained);
+  const double contradicted =
+      faces.samples > 0 ? static_cast<double>(faces.seen_through) / faces.samples : 0.0;
+  return fractionOf(explained) - contradicted;
 }
 
 // An upright cylinder's side (a circle in the plane square to `up`, PCL's 2D circle RANSAC) and
@@ -270,13 +306,13 @@ double cylinderSurfaceFraction(const std::vector<Eigen::Vector3f>& points,
 }  // namespace
 
 double simpleShapeFraction(const pcl::PointCloud<pcl::PointXYZ>& points, const Eigen::Vector3f& up,
-                           double tolerance) {
+                           double tolerance, const SceneDepth& scene, double free_space_tolerance) {
   if (!up.allFinite() || up.norm() < 0.5f) return 0.0;
   const Cloud::Ptr cloud = strided(points);
   if (static_cast<int>(cloud->size()) < kMinPoints) return 0.0;
   const Eigen::Vector3f unit_up = up.normalized();
   const double fit_tolerance = kFitScale * tolerance;
-  return std::max(boxFraction(cloud, unit_up, fit_tolerance),
+  return std::max(boxFraction(cloud, unit_up, fit_tolerance, {scene, free_space_tolerance}),
                   cylinderFraction(cloud, unit_up, fit_tolerance));
 }
 
@@ -301,7 +337,8 @@ ShapeAlternative::ShapeAlternative(const ModelLibrary& library, VerificationPara
 }
 
 std::vector<double> ShapeAlternative::penalties(const pcl::PointCloud<pcl::PointXYZ>& points,
-                                                const Eigen::Vector3f& up) const {
+                                                const Eigen::Vector3f& up,
+                                                const SceneDepth& scene) const {
   std::vector<double> result(simple_.size(), 0.0);
   if (up.isZero() || points.empty() ||
       std::all_of(simple_.begin(), simple_.end(), [](bool simple) { return simple; })) {
@@ -314,11 +351,13 @@ std::vector<double> ShapeAlternative::penalties(const pcl::PointCloud<pcl::Point
   if (depths.empty()) return result;
   std::nth_element(depths.begin(), depths.begin() + depths.size() / 2, depths.end());
   const double z = depths[depths.size() / 2];
-  // PoseVerifier::inlierTolerance at that depth: the model and the shape judged alike.
+  // PoseVerifier's tolerances at that depth: the model and the shape judged alike.
+  const double noise = verification_.depth_noise_at_1m * z * z;
   const double tolerance =
-      std::max(verification_.inlier_distance,
-               verification_.inlier_sigmas * verification_.depth_noise_at_1m * z * z);
-  const double fraction = simpleShapeFraction(points, up, tolerance);
+      std::max(verification_.inlier_distance, verification_.inlier_sigmas * noise);
+  const double free_space =
+      std::max(verification_.free_space_tolerance, verification_.free_space_sigmas * noise);
+  const double fraction = simpleShapeFraction(points, up, tolerance, scene, free_space);
   const double excess = std::max(0.0, fraction - unknown_score_);
   for (std::size_t m = 0; m < simple_.size(); ++m) result[m] = simple_[m] ? 0.0 : excess;
   return result;

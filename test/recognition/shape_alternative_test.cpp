@@ -7,11 +7,14 @@
 #include <random>
 #include <string>
 
+#include "view_direction_classification/estimation/verification_scene.h"
 #include "view_direction_classification/geometry/camera.h"
 #include "view_direction_classification/geometry/depth_renderer.h"
 #include "view_direction_classification/geometry/mug_mesh.h"
 #include "view_direction_classification/geometry/primitive_meshes.h"
+#include "view_direction_classification/geometry/scene.h"
 #include "view_direction_classification/geometry/surface_sampling.h"
+#include "view_direction_classification/scene/scene_segmentation.h"
 
 namespace vdc {
 namespace {
@@ -25,17 +28,65 @@ struct Seen {
   Eigen::Vector3f up;
 };
 
-Seen seenFromAbove(const TriangleMesh& mesh, double azimuth, double elevation_deg = 50.0,
-                   double distance = 0.8) {
+// A camera `distance` from the object's origin, `elevation_deg` above its horizon at `azimuth`.
+Eigen::Isometry3d cameraAt(double azimuth, double elevation_deg, double distance) {
   const double elevation = elevation_deg * M_PI / 180.0;
   const Eigen::Vector3d direction(std::cos(elevation) * std::cos(azimuth),
                                   std::cos(elevation) * std::sin(azimuth), std::sin(elevation));
-  const Eigen::Isometry3d camera_from_object = cameraFromObject(direction, distance, 0.0);
+  return cameraFromObject(direction, distance, 0.0);
+}
+
+Seen seenFromAbove(const TriangleMesh& mesh, double azimuth, double elevation_deg = 50.0,
+                   double distance = 0.8) {
+  const Eigen::Isometry3d camera_from_object = cameraAt(azimuth, elevation_deg, distance);
   std::mt19937 rng(7);
   Seen seen;
   seen.points = DepthRenderer(mesh).render(camera_from_object, DepthNoiseModel{true}, &rng);
   seen.up = (camera_from_object.linear() * Eigen::Vector3d::UnitZ()).cast<float>();
   return seen;
+}
+
+// What a camera `distance` away sees of `mesh` (its frame: z up, standing on z = 0) standing on a
+// table, from `elevation_deg` above the horizon at `azimuth`: the object's points, the up
+// direction and the whole frame's depth (the table's and the object's, as the scene layer
+// indexes it).
+struct SeenOnTable {
+  Seen object;
+  SceneDepth depth;
+};
+
+SeenOnTable seenOnTable(const TriangleMesh& mesh, double azimuth, double elevation_deg = 35.0,
+                        double distance = 0.8) {
+  const Eigen::Isometry3d camera_from_world = cameraAt(azimuth, elevation_deg, distance);
+  Scene scene;
+  scene.object = {mesh, Eigen::Isometry3d::Identity()};
+  scene.table_size = Eigen::Vector2d(1.2, 1.2);
+  std::mt19937 rng(11);
+  SeenOnTable seen;
+  seen.object.points = DepthRenderer(mesh).render(camera_from_world, DepthNoiseModel{true}, &rng);
+  seen.object.up = (camera_from_world.linear() * Eigen::Vector3d::UnitZ()).cast<float>();
+  const pcl::PointCloud<pcl::PointXYZ> frame =
+      DepthRenderer(sceneMesh(scene)).render(camera_from_world, DepthNoiseModel{true}, &rng);
+  const SceneSegmentationParameters segmentation;
+  std::vector<Eigen::Vector4d> supports;
+  for (const SupportPlane& plane : segmentScene(frame, segmentation).planes) {
+    supports.push_back(plane.coefficients);
+  }
+  seen.depth = indexRays(verificationScene(frame, supports, segmentation.plane_distance));
+  return seen;
+}
+
+// A disc 12 cm across standing on its rim, its face towards +y (a spool's flange, a plate in a
+// rack), and a box face of the same size.
+TriangleMesh discOnItsRim() {
+  TriangleMesh disc = makeCylinderMesh(0.06, 0.015, 64);
+  const Eigen::Isometry3d on_rim = Eigen::Translation3d(0.0, 0.0, 0.06) *
+                                   Eigen::AngleAxisd(0.5 * M_PI, Eigen::Vector3d::UnitX()) *
+                                   Eigen::Translation3d(0.0, 0.0, -0.0075);
+  for (Eigen::Vector3f& vertex : disc.vertices) {
+    vertex = (on_rim * vertex.cast<double>()).cast<float>();
+  }
+  return disc;
 }
 
 TEST(SimpleShapeFraction, ABoxAndACanAreExplainedWhole) {
@@ -96,6 +147,29 @@ TEST(SimpleShapeFraction, AFlatCanLeavesNoPclErrorLines) {
     const std::string printed = ::testing::internal::GetCapturedStderr();
     EXPECT_EQ(printed.find("[pcl::"), std::string::npos) << azimuth << ": " << printed;
     EXPECT_GT(fraction, 0.9) << azimuth;
+  }
+}
+
+// A disc's face lies in one upright plane, as a box's face does: by its points alone a box
+// explains it whole. But a box with that face would fill the disc's bounding square, and at its
+// corners the camera saw the table behind: judged against the frame's depth, the box explains
+// the disc less well than before, and a box keeps its score.
+TEST(SimpleShapeFraction, ADiscsFaceIsNoBoxsOnceTheFramesDepthShowsItsCornersFree) {
+  for (const double azimuth : {0.5 * M_PI, 0.35 * M_PI, 0.65 * M_PI}) {
+    const SeenOnTable disc = seenOnTable(discOnItsRim(), azimuth);
+    ASSERT_GT(disc.object.points.size(), 1000u);
+    const double free_space = 0.008;
+    const double alone = simpleShapeFraction(disc.object.points, disc.object.up, kTolerance);
+    EXPECT_GT(alone, 0.9) << azimuth;
+    const double judged =
+        simpleShapeFraction(disc.object.points, disc.object.up, kTolerance, disc.depth, free_space);
+    EXPECT_LT(judged, alone - 0.06) << azimuth;
+    EXPECT_LT(judged, 0.85) << azimuth;
+    const SeenOnTable box = seenOnTable(makeBoxMesh(Eigen::Vector3d(0.12, 0.015, 0.12)), azimuth);
+    EXPECT_NEAR(
+        simpleShapeFraction(box.object.points, box.object.up, kTolerance, box.depth, free_space),
+        simpleShapeFraction(box.object.points, box.object.up, kTolerance), 0.01)
+        << azimuth;
   }
 }
 

@@ -24,9 +24,13 @@ namespace vdc {
 // simple shapes standing upright on a support whose unit normal (same frame) is `up`: a box (up to
 // two perpendicular upright faces and a horizontal top) or an upright cylinder (its side and a
 // horizontal top). PCL's RANSAC (fixed seed: deterministic) on at most 2000 evenly strided points;
-// 0 for fewer than 30 points or a non-finite `up`.
+// 0 for fewer than 30 points or a non-finite `up`. Given the scene's depth (ray-indexed, camera
+// frame, as `points`), a box is also a prediction: less the share of its upright faces' rectangles
+// where the camera saw more than `free_space_tolerance` [m] beyond them (a disc's face is no
+// box's), as a model's score is less its contradicted samples. So the result is in [-1, 1].
 double simpleShapeFraction(const pcl::PointCloud<pcl::PointXYZ>& points, const Eigen::Vector3f& up,
-                           double tolerance);
+                           double tolerance, const SceneDepth& scene = SceneDepth(),
+                           double free_space_tolerance = 0.0);
 
 // Whether a model's surface samples (object frame) are a simple shape: at least `min_fraction`
 // within `tolerance` [m] of the faces of their axis-aligned bounding box, or of an upright
@@ -36,7 +40,7 @@ bool isSimpleShape(const std::vector<Eigen::Vector3f>& surface_points, double to
 
 // The simple-shape alternative of one library, applied as a penalty on each model's score: with
 // s_m lowered by max(0, a - unknown_score), where a is simpleShapeFraction at verification's
-// inlier tolerance at the candidate's median depth, "s_m against unknown_score" is "s_m against
+// tolerances at the candidate's median depth, "s_m against unknown_score" is "s_m against
 // the better of unknown_score and a". Models that are simple shapes get none.
 class ShapeAlternative {
  public:
@@ -45,9 +49,11 @@ class ShapeAlternative {
 
   // Per library model, the amount to subtract from its score on a candidate of `points` (camera
   // frame) standing on a support with unit normal `up` (camera frame; zero: no support found,
-  // no penalty).
+  // no penalty), in a frame whose depth is `scene` (ray-indexed: indexRays; empty: the box's
+  // faces are not judged).
   std::vector<double> penalties(const pcl::PointCloud<pcl::PointXYZ>& points,
-                                const Eigen::Vector3f& up) const;
+                                const Eigen::Vector3f& up,
+                                const SceneDepth& scene = SceneDepth()) const;
 
  private:
   std::vector<bool> simple_;  // per model: isSimpleShape
