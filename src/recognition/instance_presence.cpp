@@ -89,13 +89,6 @@ InstancePresence::InstancePresence(const ModelLibrary& library,
 
 InstancePresence::~InstancePresence() = default;
 
-double InstancePresence::freeSpaceTolerance(double z) const {
-  // The same tolerance as verification's free space: a sample this far in front of the
-  // observed surface is one the camera saw through.
-  return std::max(verification_.free_space_tolerance,
-                  verification_.free_space_sigmas * verification_.depth_noise_at_1m * z * z);
-}
-
 PresenceCheck InstancePresence::check(int model, const Eigen::Isometry3d& world_from_object,
                                       const SceneDepth& scene,
                                       const Eigen::Isometry3d& world_from_camera) const {
@@ -131,7 +124,7 @@ PresenceCheck InstancePresence::check(int model, const Eigen::Isometry3d& world_
     const bool table_nearest = support[i] < off_support[i];
     const float observed = std::min(off_support[i], support[i]);
     if (!std::isfinite(observed)) continue;
-    const double tolerance = freeSpaceTolerance(observed);
+    const double tolerance = freeSpaceTolerance(verification_, observed);
     if (observed < samples[i].z() - tolerance) {
       ++result.hidden;
     } else if (observed > samples[i].z() + tolerance) {

@@ -56,20 +56,20 @@ void explain(std::size_t i, float distance, double tolerance, std::vector<char>*
   (*explained)[i] = std::max((*explained)[i], level);
 }
 
-// RANSAC for one plane of `model` type about `axis` (PCL: PARALLEL_PLANE contains the axis)
-// among the points not yet explained. Marks its inliers explained; returns the plane's unit
-// normal (zero when none was found).
-Eigen::Vector3f explainByPlane(const Cloud::Ptr& cloud, int model, const Eigen::Vector3f& axis,
-                               double tolerance, std::vector<char>* explained) {
+// RANSAC for one upright plane (PCL's PARALLEL_PLANE: containing `up`, within kTiltTolerance)
+// among the points not yet explained: a box's first face. Marks its inliers explained; returns
+// the plane's unit normal (zero when none was found).
+Eigen::Vector3f explainByUprightPlane(const Cloud::Ptr& cloud, const Eigen::Vector3f& up,
+                                      double tolerance, std::vector<char>* explained) {
   auto remaining = pcl::make_shared<pcl::Indices>();
   for (std::size_t i = 0; i < cloud->size(); ++i) {
     if (!(*explained)[i]) remaining->push_back(static_cast<int>(i));
   }
   if (!spreadsInTwoDirections(*cloud, *remaining, kMinFitSpread)) return Eigen::Vector3f::Zero();
   pcl::SACSegmentation<pcl::PointXYZ> ransac;  // seeded with a constant: deterministic
-  ransac.setModelType(model);
+  ransac.setModelType(pcl::SACMODEL_PARALLEL_PLANE);
   ransac.setMethodType(pcl::SAC_RANSAC);
-  ransac.setAxis(axis);
+  ransac.setAxis(up);
   ransac.setEpsAngle(kTiltTolerance);
   ransac.setDistanceThreshold(tolerance);
   ransac.setMaxIterations(kRansacIterations);
@@ -206,8 +206,7 @@ double boxFraction(const Cloud::Ptr& cloud, const Eigen::Vector3f& up, double to
     faces.seen_through += face.seen_through;
   };
   std::vector<char> before = explained;
-  const Eigen::Vector3f first =
-      explainByPlane(cloud, pcl::SACMODEL_PARALLEL_PLANE, up, tolerance, &explained);
+  const Eigen::Vector3f first = explainByUprightPlane(cloud, up, tolerance, &explained);
   if (!first.isZero()) {
     judge(before, first);
     // The second face's normal is horizontal and square to the first's.
@@ -351,13 +350,9 @@ std::vector<double> ShapeAlternative::penalties(const pcl::PointCloud<pcl::Point
   if (depths.empty()) return result;
   std::nth_element(depths.begin(), depths.begin() + depths.size() / 2, depths.end());
   const double z = depths[depths.size() / 2];
-  // PoseVerifier's tolerances at that depth: the model and the shape judged alike.
-  const double noise = verification_.depth_noise_at_1m * z * z;
-  const double tolerance =
-      std::max(verification_.inlier_distance, verification_.inlier_sigmas * noise);
-  const double free_space =
-      std::max(verification_.free_space_tolerance, verification_.free_space_sigmas * noise);
-  const double fraction = simpleShapeFraction(points, up, tolerance, scene, free_space);
+  // Verification's tolerances at that depth: the model and the shape judged alike.
+  const double fraction = simpleShapeFraction(points, up, inlierTolerance(verification_, z), scene,
+                                              freeSpaceTolerance(verification_, z));
   const double excess = std::max(0.0, fraction - unknown_score_);
   for (std::size_t m = 0; m < simple_.size(); ++m) result[m] = simple_[m] ? 0.0 : excess;
   return result;

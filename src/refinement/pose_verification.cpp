@@ -40,6 +40,16 @@ void checkVerificationParameters(const VerificationParameters& parameters) {
   checkNonNegative(parameters.free_space_sigmas, "free_space_sigmas");
 }
 
+double inlierTolerance(const VerificationParameters& parameters, double z) {
+  return std::max(parameters.inlier_distance,
+                  parameters.inlier_sigmas * parameters.depth_noise_at_1m * z * z);
+}
+
+double freeSpaceTolerance(const VerificationParameters& parameters, double z) {
+  return std::max(parameters.free_space_tolerance,
+                  parameters.free_space_sigmas * parameters.depth_noise_at_1m * z * z);
+}
+
 PoseVerifier::PoseVerifier(std::shared_ptr<const ModelSurface> surface,
                            const std::vector<RefinementView>& views,
                            VerificationParameters parameters)
@@ -145,16 +155,6 @@ PoseVerifier::RayIndex PoseVerifier::indexScene(
   return index;
 }
 
-double PoseVerifier::inlierTolerance(double z) const {
-  return std::max(parameters_.inlier_distance,
-                  parameters_.inlier_sigmas * parameters_.depth_noise_at_1m * z * z);
-}
-
-double PoseVerifier::freeSpaceTolerance(double z) const {
-  return std::max(parameters_.free_space_tolerance,
-                  parameters_.free_space_sigmas * parameters_.depth_noise_at_1m * z * z);
-}
-
 VerificationScore PoseVerifier::score(const Eigen::Isometry3d& world_from_object) const {
   VerificationScore result;
   Counts counts;
@@ -185,7 +185,7 @@ void PoseVerifier::countFacingRematches(const std::vector<Eigen::Vector3f>& matc
     if (index[i] < 0) continue;
     const auto& sample = model[index[i]];
     const float offset = sample.getNormalVector3fMap().dot(matched[i] - sample.getVector3fMap());
-    const double tolerance = inlierTolerance(z[i]);
+    const double tolerance = inlierTolerance(parameters_, z[i]);
     if (std::abs(offset) > tolerance) continue;
     ++counts->facing_inliers;
     if (std::abs(offset) <= 0.5 * tolerance) ++counts->facing_close;
@@ -219,7 +219,7 @@ void PoseVerifier::addViewScore(const IndexedView& view, const Eigen::Isometry3d
     if (index[i] < 0 || squared[i] > radius_sq) continue;
     const auto& sample = model[index[i]];
     const float offset = sample.getNormalVector3fMap().dot(queries[i] - sample.getVector3fMap());
-    const double tolerance = inlierTolerance(observed[i].z);
+    const double tolerance = inlierTolerance(parameters_, observed[i].z);
     if (std::abs(offset) > tolerance) continue;
     ++counts->inliers;
     const Eigen::Vector3f towards_camera = camera - queries[i];
@@ -265,7 +265,7 @@ void PoseVerifier::addViewScore(const IndexedView& view, const Eigen::Isometry3d
           support_squared[i] <= ray_radius * ray_radius) {
         // The ray meets the table: the sample must lie on it.
         const float support_z = (*view.supports.points)[support_index[i]].z;
-        if (std::abs(predicted[i].z() - support_z) > freeSpaceTolerance(support_z)) {
+        if (std::abs(predicted[i].z() - support_z) > freeSpaceTolerance(parameters_, support_z)) {
           ++counts->violations;
         }
         continue;
@@ -281,7 +281,7 @@ void PoseVerifier::addViewScore(const IndexedView& view, const Eigen::Isometry3d
       continue;
     }
     const float observed_z = (*seen.points)[index[i]].z;
-    if (predicted[i].z() < observed_z - freeSpaceTolerance(observed_z)) {
+    if (predicted[i].z() < observed_z - freeSpaceTolerance(parameters_, observed_z)) {
       ++counts->violations;
     }
   }

@@ -105,7 +105,6 @@ class InstancePresence {
  private:
   // Counts one frame's check into the instance's presence.
   void record(const PresenceCheck& check, std::optional<double> time, Presence* presence) const;
-  double freeSpaceTolerance(double z) const;
 
   std::vector<std::unique_ptr<const ModelSurface>> surfaces_;  // per library model
   VerificationParameters verification_;

@@ -78,6 +78,13 @@ struct VerificationParameters {
 // Throws vdc::Error for negative or non-finite parameters.
 void checkVerificationParameters(const VerificationParameters& parameters);
 
+// [m] The tolerances at depth z [m] (camera frame): an observed point within inlierTolerance of
+// a model sample's tangent plane is explained; a predicted sample freeSpaceTolerance in front of
+// the observed surface is one the camera saw through. Every judge of the scene's depth (the
+// verifier, the presence check, the simple-shape alternative) uses these, so all judge alike.
+double inlierTolerance(const VerificationParameters& parameters, double z);
+double freeSpaceTolerance(const VerificationParameters& parameters, double z);
+
 // The render-and-compare score of one pose (doc/method.md, "Refinement"), computed on points: the
 // model's camera-facing samples are its predicted depth, the observed points the measured one.
 struct VerificationScore {
@@ -152,9 +159,6 @@ class PoseVerifier {
 
   std::shared_ptr<const ModelSurface> surface_;
   std::vector<std::unique_ptr<IndexedView>> views_;
-  // [m] The tolerances at depth z (camera frame).
-  double inlierTolerance(double z) const;
-  double freeSpaceTolerance(double z) const;
 
   VerificationParameters parameters_;
   double neighbour_radius_;
