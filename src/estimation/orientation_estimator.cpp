@@ -390,6 +390,7 @@ ViewUpdate OrientationEstimator::completeSearch(ViewUpdate update) {
 }
 
 void OrientationEstimator::fuseRefinement(const RefinementResult& refinement, ViewUpdate* result) {
+  result->fitted_identity_score = bestFittedIdentityScore(refinement);
   if (refinement.kept.empty()) return;
   filter_.update(refinedMeasurement(refinement, parameters_.refined_fusion));
   map_cache_.reset();

@@ -45,6 +45,7 @@ SceneDepth verificationScene(const pcl::PointCloud<pcl::PointXYZ>& cloud,
   SceneDepth scene;
   if (occluders->size() > object.points.size()) scene.occluders = occluders;
   if (!table->empty()) scene.supports = table;
+  scene.support_plane = object.table;
   return scene;
 }
 

@@ -25,6 +25,12 @@ using Clock = std::chrono::steady_clock;
 // 4 cm 0.36-0.47 (instance_overlap_test.cpp).
 constexpr double kSameObjectOverlap = 0.1;
 
+// Two identified objects of different models collide (InstanceCollision) when a tenth of either's
+// surface lies more than 1 cm inside the other: objects side by side or touching share nothing,
+// and a pose error of a few millimetres moves no sample that deep.
+constexpr double kCollisionDepth = 0.01;
+constexpr double kMinCollision = 0.1;
+
 // [m] The camera sees past an unknown object's centroid by at least this where the object is
 // gone: the centroid of what was seen of it lies inside it, centimetres above the table.
 constexpr double kEmptyPlaceDepth = 0.02;
@@ -132,6 +138,7 @@ SceneEstimator::SceneEstimator(ModelLibrary library, SceneEstimatorParameters pa
       library_, parameters_.instance.refinement_parameters.verification, parameters_.absent_views,
       parameters_.forget_gone_after);
   overlap_ = std::make_unique<InstanceOverlap>(library_);
+  collision_ = std::make_unique<InstanceCollision>(library_);
 }
 
 const ObjectInstance* SceneEstimator::instance(int id) const {
@@ -250,6 +257,7 @@ SceneUpdate SceneEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
   }
   identifyAdjacentGroups(cloud, segments, candidates, scene, world_from_camera, time,
                          clusters_tried, &identifications, &result);
+  dropUnlikelyInstances(&result);  // those that yielded to a colliding identification
   result.forgotten = presence_->forgetGone(instances_, time);
   result.total_ms = millisecondsSince(start);
   return result;
@@ -264,7 +272,8 @@ std::vector<SceneEstimator::FrameCandidate> SceneEstimator::frameCandidates(
     FrameCandidate frame_candidate;
     frame_candidate.points = candidatePoints(cloud, candidate);
     if (candidate.support >= 0) {
-      frame_candidate.up = segments.planes[candidate.support].coefficients.head<3>().cast<float>();
+      frame_candidate.support = segments.planes[candidate.support].coefficients;
+      frame_candidate.up = frame_candidate.support->head<3>().cast<float>();
     }
     for (const auto& p : frame_candidate.points) {
       frame_candidate.points_world.push_back(world_from_camera_f * p.getVector3fMap());
@@ -353,17 +362,23 @@ void SceneEstimator::updateAssignedInstances(std::vector<FrameCandidate>& candid
     ObjectInstance& instance = instances_[i];
     pcl::PointCloud<pcl::PointXYZ> points;
     Eigen::Vector3f up = Eigen::Vector3f::Zero();
+    SceneDepth instance_scene = scene;
     int first = -1;  // its largest candidate: where its update is reported
     for (std::size_t c = 0; c < candidates.size(); ++c) {
       if (candidates[c].instance != static_cast<int>(i)) continue;
       points += candidates[c].points;
       result->candidates[c].instance = instance.id;
-      if (first >= 0) result->candidates[c].note = "a part of " + instance.name;
-      if (first < 0) first = static_cast<int>(c), up = candidates[c].up;
+      if (first >= 0) {
+        result->candidates[c].note = "a part of " + instance.name;
+        continue;
+      }
+      first = static_cast<int>(c);
+      up = candidates[c].up;
+      instance_scene.support_plane = candidates[c].support;
     }
     if (first < 0) continue;
-    const ViewUpdate update = instance.estimator->update(points, world_from_camera, time,
-                                                         {scene, BeliefSearch::kWhenDue, nullptr});
+    const ViewUpdate update = instance.estimator->update(
+        points, world_from_camera, time, {instance_scene, BeliefSearch::kWhenDue, nullptr});
     result->candidates[first].update = update;
     instance.centroid_world = result->candidates[first].centroid_world;
     instance.last_seen = time;
@@ -379,7 +394,7 @@ void SceneEstimator::updateAssignedInstances(std::vector<FrameCandidate>& candid
 void SceneEstimator::weighIdentity(ObjectInstance& instance, const ViewUpdate& update,
                                    double penalty, const Eigen::Isometry3d& world_from_camera) {
   const double p = std::clamp(instance.identity_probability, 1e-9, 1.0 - 1e-9);
-  std::optional<double> score = update.identity_score;
+  std::optional<double> score = update.fitted_identity_score;
   if (score) *score -= penalty;
   const double log_odds =
       std::log(p / (1.0 - p)) + identityEvidence(score, parameters_.identification);
@@ -536,8 +551,10 @@ int SceneEstimator::identify(const FrameCandidate& candidate, const SceneDepth& 
   const std::vector<double> penalties =
       candidate.allowed.empty() ? shapes_->penalties(candidate.points, candidate.up, scene)
                                 : std::vector<double>();
+  SceneDepth candidate_scene = scene;
+  candidate_scene.support_plane = candidate.support;
   Identification identification = identifyCandidate(
-      library_, parameters_.instance, candidate.points, outcome->sides, std::move(scene),
+      library_, parameters_.instance, candidate.points, outcome->sides, candidate_scene,
       world_from_camera, time, parameters_.identification, penalties, candidate.allowed);
   outcome->probability = identification.probability;
   if (identification.model < 0) {
@@ -547,11 +564,25 @@ int SceneEstimator::identify(const FrameCandidate& candidate, const SceneDepth& 
     unknowns_.remember(outcome->centroid_world, outcome->sides, world_from_camera.translation());
     return -1;
   }
+  if (collidesWithLikelierInstance(identification, outcome)) {
+    if (remember_unknown) {
+      unknowns_.remember(outcome->centroid_world, outcome->sides, world_from_camera.translation());
+    }
+    return -1;
+  }
   // A moved instance keeps its id; the fresh estimator that fused this view replaces its belief
   // (the object may have been turned on the way). So does an instance whose believed pose did
   // not explain this candidate while the identified pose shares its volume: its pose is out of
   // date, whether it moved a little or a piece fused this frame led it astray.
   const int same = sameObject(identification, outcome);
+  if (same >= 0 && newOnThisFrame(instances_[same], time) &&
+      instances_[same].identity_probability > identification.probability) {
+    // A piece of an object found on this frame, identified less surely than the object was.
+    outcome->moved = false;
+    outcome->instance = instances_[same].id;
+    outcome->note = "a part of " + instances_[same].name + ", which was identified more surely";
+    return same;
+  }
   const int index = same >= 0 ? same : instanceFor(identification.model, outcome);
   ObjectInstance& instance = instances_[index];
   instance.estimator = std::move(identification.estimator);
@@ -564,6 +595,29 @@ int SceneEstimator::identify(const FrameCandidate& candidate, const SceneDepth& 
   outcome->instance = instance.id;
   outcome->update = identification.update;
   return index;
+}
+
+bool SceneEstimator::newOnThisFrame(const ObjectInstance& instance, std::optional<double> time) {
+  return time && instance.last_seen == time && instance.frames_seen == 1;
+}
+
+bool SceneEstimator::collidesWithLikelierInstance(const Identification& identification,
+                                                  CandidateOutcome* outcome) {
+  const std::optional<Eigen::Isometry3d> pose = believedPose(*identification.estimator);
+  if (!pose) return false;
+  const int rival = collision_->collidingInstance(instances_, identification.model, *pose,
+                                                  kCollisionDepth, kMinCollision);
+  if (rival < 0) return false;
+  ObjectInstance& other = instances_[rival];
+  if (other.identity_probability >= identification.probability) {
+    outcome->note = library_.models()[identification.model].name + " would stand inside " +
+                    other.name + ", which is at least as probable";
+    return true;
+  }
+  // The less probable of the two yields; dropUnlikelyInstances forgets it at the end of the frame.
+  outcome->note = "takes the place of " + other.name + ", which would stand inside it";
+  other.identity_probability = 0.0;
+  return false;
 }
 
 int SceneEstimator::sameObject(const Identification& identification,

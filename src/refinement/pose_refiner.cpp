@@ -743,4 +743,14 @@ RefinementResult PoseRefiner::refine(const BinghamMixture& belief, const Eigen::
   return result;
 }
 
+std::optional<double> bestFittedIdentityScore(const RefinementResult& refinement) {
+  std::optional<double> best;
+  for (const RefinedPose& pose : refinement.tried) {
+    if (!pose.screened_in || !pose.converged || pose.score.observed == 0) continue;
+    const double score = pose.score.identityScore();
+    if (!best || score > *best) best = score;
+  }
+  return best;
+}
+
 }  // namespace vdc

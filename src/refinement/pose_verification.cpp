@@ -118,6 +118,7 @@ std::unique_ptr<PoseVerifier::IndexedView> PoseVerifier::indexView(
   indexed->object = {points, rayIndexOf(*points)};
   indexed->footprint = convexHull(std::move(flat));
   indexed->camera_from_world = view.world_from_camera.inverse();
+  if (view.scene.support_plane) indexed->support_plane = view.scene.support_plane->cast<float>();
   if (view.scene.occluders) {
     indexed->scene = view.scene.occluder_rays
                          ? RayIndex{view.scene.occluders, view.scene.occluder_rays}
@@ -166,6 +167,7 @@ VerificationScore PoseVerifier::score(const Eigen::Isometry3d& world_from_object
   }
   if (result.predicted > 0)
     result.violation_fraction = double(counts.violations) / result.predicted;
+  if (counts.below_judged > 0) result.sunk_fraction = double(counts.sunk) / counts.below_judged;
   return result;
 }
 
@@ -239,8 +241,13 @@ void PoseVerifier::addViewScore(const IndexedView& view, const Eigen::Isometry3d
   const Eigen::Matrix3f rotation = transform.linear();
   std::vector<Eigen::Vector3f> predicted, rays;
   float nearest_z = std::numeric_limits<float>::infinity();  // bounds every ray's radius below
+  if (view.support_plane) counts->below_judged += static_cast<int>(model.size());
   for (const auto& sample : model.points) {
     const Eigen::Vector3f m = transform * sample.getVector3fMap();
+    if (view.support_plane && view.support_plane->head<3>().dot(m) + (*view.support_plane)[3] <
+                                  -freeSpaceTolerance(parameters_, m.z())) {
+      ++counts->sunk;
+    }
     if (!(m.z() > 0.0f)) continue;
     const Eigen::Vector3f n = rotation * sample.getNormalVector3fMap();
     if (-n.dot(m) / m.norm() < parameters_.min_facing_cosine) continue;

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <string>
@@ -624,6 +625,35 @@ TEST_F(PoseRefinerTest, APoseSunkIntoTheSupportIsContradictedWhereOneBehindAnOcc
   EXPECT_LT(truth.violation_fraction, 0.05);
 }
 
+TEST_F(PoseRefinerTest, APoseSunkIntoTheTableIsContradictedByItsPlaneWhereNoRayShowsIt) {
+  // The mug's own points as the only scene points (as if another object hid the table around
+  // it): pushed 4 cm down into its table, the mug's parts under the table meet no ray that shows
+  // the table. The table's plane does: no part of an object lies under the surface it stands on,
+  // and the identity score says so.
+  RefinementView rays_only = view(kHandleSideOn, 0.7);
+  rays_only.scene.occluders = rays_only.points;
+  const Eigen::Isometry3d camera_from_object =
+      rays_only.world_from_camera.inverse() * world_from_object_;
+  const Eigen::Vector3d up = camera_from_object.linear().col(2);
+  const Eigen::Vector3d foot =
+      camera_from_object * Eigen::Vector3d(0.0, 0.0, mesh_->bounds().min().z());
+  ASSERT_GT(up.dot(-foot), 0.0);  // the plane's normal points towards the camera
+  RefinementView on_table = rays_only;
+  on_table.scene.support_plane = Eigen::Vector4d(up.x(), up.y(), up.z(), -up.dot(foot));
+  Eigen::Isometry3d sunk = world_from_object_;
+  sunk.translation() -= 0.04 * world_from_object_.linear().col(2);
+
+  const VerificationScore without_plane = PoseVerifier(*surface_, {rays_only}).score(sunk);
+  const VerificationScore with_plane = PoseVerifier(*surface_, {on_table}).score(sunk);
+  EXPECT_EQ(without_plane.sunk_fraction, 0.0);
+  EXPECT_GT(with_plane.sunk_fraction, 0.2);
+  EXPECT_LT(with_plane.identityScore(), without_plane.identityScore() - 0.2);
+  // Refinement's acceptance leaves it to identification (VerificationScore::score).
+  EXPECT_DOUBLE_EQ(with_plane.score(), without_plane.score());
+  // Standing on the table, nothing of it is sunk.
+  EXPECT_EQ(PoseVerifier(*surface_, {on_table}).score(world_from_object_).sunk_fraction, 0.0);
+}
+
 TEST_F(PoseRefinerTest, ASceneIndexedOnceScoresAsTheSceneIndexedPerVerifier) {
   // indexRays indexes the whole scene once for every verifier of a frame instead of each
   // verifier indexing the points around its object: the same scores, the true pose's and a
@@ -768,6 +798,25 @@ TEST_F(PoseRefinerTest, RestartsOnlyTheTurnsTheBeliefAllows) {
       BinghamMixture({0.5, 0.5}, {concentratedAt(truth(), 4000.0), concentratedAt(turned, 4000.0)}),
       position(), {v});
   EXPECT_EQ(restarts(two_modes), 1) << describe(two_modes, truth());
+}
+
+TEST_F(PoseRefinerTest, APoseTheBeliefRefusesStillTellsHowWellTheModelFitsTheView) {
+  // A sharp belief 15 degrees off the truth about the line of sight: ICP carries its start onto
+  // the truth, which verifies well but lies outside the belief, so nothing is kept. That the
+  // model fits the view is still known: the belief is wrong, not the object.
+  const RefinementView v = view(kHandleSideOn, 1.0);
+  const PoseRefiner refiner(*surface_);
+  const RefinementResult result = refiner.refine(
+      BinghamMixture({1.0}, {concentratedAt(turnedAboutSight(v, 15.0 * M_PI / 180.0), 4000.0)}),
+      position(), {v});
+  ASSERT_TRUE(result.kept.empty()) << describe(result, truth());
+  const std::optional<double> fitted = bestFittedIdentityScore(result);
+  ASSERT_TRUE(fitted.has_value()) << describe(result, truth());
+  EXPECT_GT(*fitted, 0.9) << describe(result, truth());
+
+  RefinementResult nothing_aligned = result;
+  for (RefinedPose& pose : nothing_aligned.tried) pose.converged = false;
+  EXPECT_FALSE(bestFittedIdentityScore(nothing_aligned).has_value());
 }
 
 TEST_F(PoseRefinerTest, SymmetryAxisOfTheMugIsItsBodysAxis) {

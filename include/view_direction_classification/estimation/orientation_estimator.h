@@ -152,6 +152,11 @@ struct ViewUpdate {
   // The same pose's VerificationScore::identityScore (only samples on the side the camera sees
   // explain points): what the scene layer compares between models.
   std::optional<double> identity_score;
+  // bestFittedIdentityScore of this view's refinement: whether the model fits the
+  // view at all, also when the belief refused every pose. What the scene layer weighs an
+  // instance's identity by after its first view: a belief that settled on a wrong orientation is
+  // no evidence that the object is another.
+  std::optional<double> fitted_identity_score;
   std::string refinement_skip_reason;
   // The belief's best pose fitted this view poorly, so a search beyond its hypotheses ran
   // (belief_check.h); rebuild_reason non-empty: the search's pose fitted the latest views clearly

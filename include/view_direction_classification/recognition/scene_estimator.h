@@ -15,6 +15,7 @@
 
 #include "view_direction_classification/estimation/orientation_estimator.h"
 #include "view_direction_classification/recognition/candidate_identification.h"
+#include "view_direction_classification/recognition/instance_collision.h"
 #include "view_direction_classification/recognition/instance_explanation.h"
 #include "view_direction_classification/recognition/instance_overlap.h"
 #include "view_direction_classification/recognition/instance_presence.h"
@@ -171,6 +172,7 @@ class SceneEstimator {
     pcl::PointCloud<pcl::PointXYZ> points;  // camera frame
     std::vector<Eigen::Vector3f> points_world;
     Eigen::Vector3f up = Eigen::Vector3f::Zero();  // its support's normal (camera frame), if any
+    std::optional<Eigen::Vector4d> support;        // the plane it stands on (camera frame)
     int instance = -1;                             // index into instances_ once assigned
     // The models it may be (label_models); empty: any. ignored: its class has no model.
     std::vector<bool> allowed;
@@ -239,6 +241,14 @@ class SceneEstimator {
   // The index of the instance of its model the identified object is because the two would
   // share their volume (InstanceOverlap), or -1; the outcome says it moved.
   int sameObject(const Identification& identification, CandidateOutcome* outcome) const;
+  // Whether the instance was first identified on the frame of `time` (never without a time).
+  static bool newOnThisFrame(const ObjectInstance& instance, std::optional<double> time);
+  // Whether the identified object would stand inside an instance of another model
+  // (InstanceCollision) that is at least as probable: then it stays unknown. A less probable
+  // such instance yields instead: its probability is set to 0, to be dropped at the end of the
+  // frame. The outcome's note says which happened.
+  bool collidesWithLikelierInstance(const Identification& identification,
+                                    CandidateOutcome* outcome);
   // The instance a candidate identified as `model` is (its index): a known one of the model that
   // is out of place (InstancePresence::movedInstance: it moved here), else a new one.
   int instanceFor(int model, CandidateOutcome* outcome);
@@ -249,6 +259,7 @@ class SceneEstimator {
   std::unique_ptr<ShapeAlternative> shapes_;
   std::unique_ptr<InstancePresence> presence_;
   std::unique_ptr<InstanceOverlap> overlap_;
+  std::unique_ptr<InstanceCollision> collision_;  // identifications of two models in one space
   // Per library model: an estimator that fuses nothing and holds its model's surfaces alive.
   std::vector<std::unique_ptr<const OrientationEstimator>> surface_holders_;
   std::vector<ObjectInstance> instances_;

@@ -4,6 +4,7 @@
 #include <Eigen/Geometry>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -173,6 +174,12 @@ struct RefinementResult {
   double milliseconds = 0.0;
   bool skipped() const { return !skip_reason.empty(); }
 };
+
+// The best VerificationScore::identityScore of the poses ICP aligned and verified, accepted or
+// not: how well the model explains the view whatever the belief says of its orientation (a pose
+// refused for leaving the belief's credible region may explain it well). Nothing when no pose
+// was aligned.
+std::optional<double> bestFittedIdentityScore(const RefinementResult& refinement);
 
 // The view's points voxel-filtered to `voxel` [m] (PCL's VoxelGrid, one centroid per occupied
 // cell), the same camera pose: what refinement scores and aligns (a 640 x 480 view of the mug

@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "view_direction_classification/refinement/model_surface.h"
@@ -30,7 +31,13 @@ struct SceneDepth {
   // (indexRays). Without them each verifier indexes the points around its own object, which for
   // a scene of many candidates and models costs more than the verification itself.
   std::shared_ptr<const NearestPoints> occluder_rays, support_rays;
-  bool empty() const { return !occluders && !supports; }
+  // Optional: the plane the object stands on (n . x + d = 0, unit n towards the camera). The
+  // table is solid: a model sample below it by more than the free-space tolerance is sunk into
+  // it, whether or not the camera could see there. The rays alone miss this where another object
+  // hides the part under the table: a cow sunk 5 cm into the table at the foot of a box explained
+  // the box's lowest strip with its back at 0.83-0.97.
+  std::optional<Eigen::Vector4d> support_plane;
+  bool empty() const { return !occluders && !supports && !support_plane; }
 };
 
 // The scene's points with a ray (in front of the camera, not 90 degrees off its axis) and their
@@ -104,16 +111,23 @@ struct VerificationScore {
   // so a prediction outside them is a surface that is not there). Samples behind the observed
   // surface are occluded, which is no contradiction.
   double violation_fraction = 0.0;
+  // Of the model's samples (all of them, seen or not), those sunk into the support plane
+  // (SceneDepth::support_plane); 0 without one. No part of an object lies inside its table.
+  double sunk_fraction = 0.0;
   int observed = 0, predicted = 0;
   // inlier_fraction - violation_fraction, in [-1, 1]: both halves matter, a pose that explains
   // the points with a model part sticking out into free space is as wrong as one that leaves
-  // points unexplained.
+  // points unexplained. It leaves out sunk_fraction: refinement turns a pose sunk into the table
+  // by its restarts into the right one (a helmet 3 cm low and tilted, whose restarts found the
+  // truth), which it only tries from a pose it accepted.
   double score() const { return inlier_fraction - violation_fraction; }
   // How well the model, and no other object, explains the view: facing inliers weighted by their
   // residual (1 within half the tolerance, 1/2 up to it), a coarse residual likelihood, minus the
-  // contradicted predictions. The simple-shape alternative (shape_alternative.h) is weighed alike.
+  // contradicted predictions and the share sunk into the table. The simple-shape alternative
+  // (shape_alternative.h) is weighed alike.
   double identityScore() const {
-    return 0.5 * (facing_inlier_fraction + facing_close_fraction) - violation_fraction;
+    return 0.5 * (facing_inlier_fraction + facing_close_fraction) - violation_fraction -
+           sunk_fraction;
   }
 };
 
@@ -140,6 +154,7 @@ class PoseVerifier {
     RayIndex scene, supports;
     Eigen::Isometry3d camera_from_world;
     std::vector<Eigen::Vector2f> footprint;  // convex hull of the object's rays, counter-clockwise
+    std::optional<Eigen::Vector4f> support_plane;  // camera frame
   };
   std::unique_ptr<IndexedView> indexView(const RefinementView& view) const;
   RayIndex indexScene(const pcl::PointCloud<pcl::PointXYZ>& scene,
@@ -147,6 +162,7 @@ class PoseVerifier {
   // Counts of one pose over the views.
   struct Counts {
     int inliers = 0, facing_inliers = 0, facing_close = 0, violations = 0;
+    int sunk = 0, below_judged = 0;  // samples sunk into the support plane, of those judged
   };
   void addViewScore(const IndexedView& view, const Eigen::Isometry3d& world_from_object,
                     Counts* counts, VerificationScore* score) const;
