@@ -13,8 +13,8 @@ namespace vdc {
 
 // The truth of each view of one patrol pass: the present objects as the view shows them, and
 // the places objects left, with how much of each place the view sees free (a place counts as
-// seen where the object, were it still there, would be in sight), for the time to notice a
-// removal in views of its place.
+// seen where the object, were it still there, would be in sight, inside the image, and the depth
+// shows a surface at or behind it), for the time to notice a removal in views of its place.
 class PatrolTruthRenderer {
  public:
   // present: presentScene(scene, &ids); vacated: places of objects of `scene`.
@@ -28,8 +28,9 @@ class PatrolTruthRenderer {
   TableScene present_;
   std::vector<int> ids_;
   std::vector<VacatedPlace> vacated_;
+  CameraIntrinsics intrinsics_;
   DepthRenderer whole_scene_;
-  std::vector<DepthRenderer> places_;  // per vacated: its object's mesh
+  std::vector<DepthRenderer> places_;  // per vacated: its object's mesh, in a padded image
 };
 
 }  // namespace vdc
