@@ -130,5 +130,49 @@ TEST_F(InstanceCollisionTest, TheInstanceAnotherModelWouldStandInIsFoundUnlessGo
   EXPECT_EQ(collision_.collidingInstance(instances, kBlock, block_in_mug, kDepth, 0.1), -1);
 }
 
+// A one-sided plate 14 cm square at z = 0, outward +z: what lies under it is inside it, like the
+// space behind a cow's ear or hoof as its nearest samples tell it.
+std::shared_ptr<const ModelBundle> plateBundle() {
+  auto bundle = std::make_shared<ModelBundle>();
+  for (double x = -0.07; x <= 0.0701; x += 0.004) {
+    for (double y = -0.07; y <= 0.0701; y += 0.004) {
+      bundle->surface_points.emplace_back(x, y, 0.0);
+      bundle->surface_normals.emplace_back(0.0f, 0.0f, 1.0f);
+    }
+  }
+  bundle->bounds = Eigen::AlignedBox3d(Eigen::Vector3d(-0.07, -0.07, -0.001),
+                                       Eigen::Vector3d(0.07, 0.07, 0.001));
+  return bundle;
+}
+
+// A 1 cm cube's samples, its origin at its base's centre.
+std::shared_ptr<const ModelBundle> smallCubeBundle() {
+  const TriangleMesh mesh = makeBoxMesh(Eigen::Vector3d::Constant(0.01));
+  const SurfaceSamples samples = sampleSurface(mesh, 0.002, 1);
+  auto bundle = std::make_shared<ModelBundle>();
+  bundle->surface_points = samples.points;
+  bundle->surface_normals = samples.normals;
+  const Eigen::AlignedBox3f bounds = mesh.bounds();
+  bundle->bounds = Eigen::AlignedBox3d(bounds.min().cast<double>(), bounds.max().cast<double>());
+  return bundle;
+}
+
+// Inside is told only within 37 degrees of the nearest sample's inward normal. A cube 1.5-2.5 cm
+// under the plate's middle is inside it; the same cube 2.5-3.5 cm beside its edge lies just as
+// far behind the edge samples' tangent plane, but off to the side, 45 degrees or more from their
+// normal: outside. (By the tangent plane alone it would count as wholly inside.)
+TEST(InstanceCollisionCone, APointBesideAnEdgeBehindItsTangentPlaneIsNotInside) {
+  constexpr int kPlate = 0, kCube = 1;
+  const ModelLibrary library({{"plate", plateBundle()}, {"cube", smallCubeBundle()}});
+  const InstanceCollision collision(library);
+  const Eigen::Isometry3d plate = Eigen::Isometry3d::Identity();
+  EXPECT_GT(collision.penetration(kCube, placed(Eigen::Vector3d(0.0, 0.0, -0.025)), kPlate, plate,
+                                  kDepth),
+            0.9);
+  EXPECT_EQ(collision.penetration(kCube, placed(Eigen::Vector3d(0.10, 0.0, -0.025)), kPlate, plate,
+                                  kDepth),
+            0.0);
+}
+
 }  // namespace
 }  // namespace vdc
