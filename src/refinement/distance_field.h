@@ -28,20 +28,8 @@ class TruncatedDistanceField {
   double distance(const Eigen::Vector3f& p) const;
   double truncation() const { return truncation_; }
 
-  // For each query, the index of its nearest sample and the squared distance to it, or -1 and
-  // infinity when no sample lies within max_distance (<= truncation): NearestPoints::search's
-  // answer, from the nearest samples of the eight nodes around the query. That is the exact
-  // nearest sample unless the query lies nearer to a sample that is no node's nearest, and then
-  // one at most a cell's diagonal farther: ICP's correspondences on a surface of samples a few
-  // millimetres apart, at a twentieth of a k-d tree search's cost.
-  void nearest(const std::vector<Eigen::Vector3f>& queries, std::vector<int>* indices,
-               std::vector<float>* squared_distances, double max_distance) const;
-
  private:
   double node(int x, int y, int z) const;
-  std::size_t nodeIndex(int x, int y, int z) const {
-    return (static_cast<std::size_t>(z) * size_.y() + y) * size_.x() + x;
-  }
 
   double truncation_, cell_;
   Eigen::Vector3d origin_;  // the node (0, 0, 0)
@@ -49,11 +37,6 @@ class TruncatedDistanceField {
   // Per node, the distance in units of truncation / 65535: a quarter of a float's memory, and a
   // hundredth of a millimetre's resolution at ICP's 15 mm.
   std::vector<std::uint16_t> nodes_;
-  // Per node, its nearest sample, kept up to a cell's diagonal beyond the truncation so that
-  // every node around a query within the truncation of a sample has one; kNoSample farther.
-  static constexpr std::uint32_t kNoSample = 0xffffffffu;
-  std::vector<std::uint32_t> nearest_;
-  std::vector<Eigen::Vector3f> samples_;
 };
 
 }  // namespace vdc

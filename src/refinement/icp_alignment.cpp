@@ -90,7 +90,7 @@ class BatchedCorrespondences
     }
     std::vector<int> matches;
     std::vector<float> squared;
-    surface_->nearestWithin(queries, &matches, &squared, max_distance);
+    surface_->nearest().search(queries, &matches, &squared, max_distance);
     const double max_squared = max_distance * max_distance;
     for (std::size_t i = 0; i < queries.size(); ++i) {
       if (matches[i] < 0 || squared[i] > max_squared) continue;
@@ -122,7 +122,7 @@ double meanSquaredDistance(const ModelSurface& surface,
   const std::vector<Eigen::Vector3f> queries = objectFramePoints(observed, object_from_world);
   std::vector<int> matches;
   std::vector<float> squared;
-  surface.nearestWithin(queries, &matches, &squared, max_distance);
+  surface.nearest().search(queries, &matches, &squared, max_distance);
   double sum = 0.0;
   int inside = 0;
   for (const float d2 : squared) {

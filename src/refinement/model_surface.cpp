@@ -64,11 +64,8 @@ std::vector<Eigen::ParametrizedLine<double, 3>> nearSymmetryAxes(
 
 ModelSurface::ModelSurface(const std::vector<Eigen::Vector3f>& points,
                            const std::vector<Eigen::Vector3f>& normals,
-                           const Eigen::AlignedBox3d& bounds, double source_spacing, double spacing,
-                           bool fields_for_nearest)
-    : cloud_(new pcl::PointCloud<pcl::PointNormal>),
-      bounds_(bounds),
-      fields_for_nearest_(fields_for_nearest) {
+                           const Eigen::AlignedBox3d& bounds, double source_spacing, double spacing)
+    : cloud_(new pcl::PointCloud<pcl::PointNormal>), bounds_(bounds) {
   if (points.size() != normals.size()) {
     throw Error("the model surface has " + std::to_string(points.size()) + " points but " +
                 std::to_string(normals.size()) + " normals");
@@ -135,16 +132,6 @@ const TruncatedDistanceField& ModelSurface::distanceField(double truncation) con
   fields_.push_back(std::make_shared<const TruncatedDistanceField>(
       samples, bounds_, truncation, std::max(0.002, 0.5 * spacing_)));
   return *fields_.back();
-}
-
-void ModelSurface::nearestWithin(const std::vector<Eigen::Vector3f>& queries,
-                                 std::vector<int>* indices, std::vector<float>* squared_distances,
-                                 double max_distance) const {
-  if (fields_for_nearest_ && max_distance > 0.0 && std::isfinite(max_distance)) {
-    distanceField(max_distance).nearest(queries, indices, squared_distances, max_distance);
-  } else {
-    nearest_->search(queries, indices, squared_distances, max_distance);
-  }
 }
 
 }  // namespace vdc

@@ -397,7 +397,7 @@ std::shared_ptr<const ModelSurface> facingPart(const ModelSurface& surface,
   }
   if (points.size() < 10) return nullptr;
   return std::make_shared<const ModelSurface>(points, normals, surface.bounds(), surface.spacing(),
-                                              surface.spacing(), /*fields_for_nearest=*/false);
+                                              surface.spacing());
 }
 
 // Each kept pose aligned once more, on every observed point (voxel-filtered to

@@ -55,55 +55,6 @@ TEST(TruncatedDistanceField, AgreesWithTheNearestSampleWithinOneAndAHalfMillimet
   EXPECT_EQ(&surface.distanceField(truncation), &field);
 }
 
-// ICP's correspondences read the field's nodes' nearest samples instead of the k-d tree: nearly
-// always the same sample, never one more than a cell's diagonal (2 mm cells here) farther, none
-// reported beyond the distance and none missed but within a cell's diagonal of it.
-TEST(TruncatedDistanceField, FindsTheKdTreesNearestSampleOrOneAtMostACellDiagonalFarther) {
-  const ModelBundle bundle = mugSurfaceBundle();
-  const ModelSurface surface(bundle.surface_points, bundle.surface_normals, bundle.bounds, 0.002,
-                             0.004);
-  const double max_distance = 0.015, cell_diagonal = 0.002 * std::sqrt(3.0);
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<float> offset(-0.09f, 0.09f);
-  const Eigen::Vector3f centre = bundle.bounds.center().cast<float>();
-  std::vector<Eigen::Vector3f> queries;
-  for (int i = 0; i < 20000; ++i) {
-    queries.push_back(centre + Eigen::Vector3f(offset(rng), offset(rng), offset(rng)));
-  }
-  queries.push_back(Eigen::Vector3f::Constant(std::numeric_limits<float>::quiet_NaN()));
-  std::vector<int> exact, from_field;
-  std::vector<float> exact_squared, field_squared;
-  surface.nearest().search(queries, &exact, &exact_squared, max_distance);
-  surface.nearestWithin(queries, &from_field, &field_squared, max_distance);
-  ASSERT_EQ(from_field.size(), queries.size());
-  int within = 0, same = 0;
-  for (std::size_t q = 0; q < queries.size(); ++q) {
-    if (exact[q] < 0) {  // nothing within the distance: nothing from the field either
-      EXPECT_LT(from_field[q], 0) << queries[q].transpose();
-      continue;
-    }
-    ++within;
-    if (from_field[q] < 0) {  // missed only at the edge, where a node's sample lies beyond it
-      EXPECT_GT(std::sqrt(exact_squared[q]), max_distance - cell_diagonal);
-      continue;
-    }
-    if (from_field[q] == exact[q]) ++same;
-    EXPECT_LE(std::sqrt(field_squared[q]), max_distance);
-    EXPECT_LE(std::sqrt(field_squared[q]), std::sqrt(exact_squared[q]) + cell_diagonal);
-    const Eigen::Vector3f sample = surface.cloud()->points[from_field[q]].getVector3fMap();
-    EXPECT_FLOAT_EQ((sample - queries[q]).squaredNorm(), field_squared[q]);
-  }
-  EXPECT_GT(within, 2000);  // the queries did probe the surface's neighbourhood
-  EXPECT_GT(same, 0.97 * within);
-  // A surface that keeps to its k-d tree answers exactly.
-  const ModelSurface tree_only(bundle.surface_points, bundle.surface_normals, bundle.bounds, 0.002,
-                               0.004, /*fields_for_nearest=*/false);
-  std::vector<int> from_tree;
-  std::vector<float> tree_squared;
-  tree_only.nearestWithin(queries, &from_tree, &tree_squared, max_distance);
-  EXPECT_EQ(from_tree, exact);
-}
-
 TEST(SharedModelSurface, RefinersOfOneBundleShareItsSurfaceWhileOneHoldsIt) {
   const ModelBundle bundle = mugSurfaceBundle();
   std::shared_ptr<const ModelSurface> first = sharedModelSurface(bundle, 0.004);

@@ -26,11 +26,9 @@ class ModelSurface {
   // spacing when they are denser; source_spacing is theirs. bounds: the object's box. Throws
   // vdc::Error for fewer than 10 samples, a size mismatch, non-finite values, an empty box or a
   // non-positive spacing.
-  // fields_for_nearest: whether nearestWithin() may read a distance field (see there); false for
-  // a surface built for a few searches, such as the polish's facing part of each view.
   ModelSurface(const std::vector<Eigen::Vector3f>& points,
                const std::vector<Eigen::Vector3f>& normals, const Eigen::AlignedBox3d& bounds,
-               double source_spacing, double spacing, bool fields_for_nearest = true);
+               double source_spacing, double spacing);
 
   const pcl::PointCloud<pcl::PointNormal>::Ptr& cloud() const { return cloud_; }
   // The samples' index for batched nearest-sample searches (nearest_points.h), built once; every
@@ -39,13 +37,6 @@ class ModelSurface {
   // The samples' distance field truncated at `truncation` [m] (distance_field.h: the screening of
   // refinement's starts), built on first use for each truncation and kept; thread-safe.
   const TruncatedDistanceField& distanceField(double truncation) const;
-  // NearestPoints::search within max_distance, for ICP's correspondences: through the distance
-  // field truncated at max_distance (its nodes' nearest samples: the exact nearest but where a
-  // sample no node keeps is nearer, then one at most a grid cell's diagonal farther), built on
-  // first use, where the surface allows fields for it; else through the k-d tree. ICP asks
-  // millions of these per scene; the field answers them several times faster.
-  void nearestWithin(const std::vector<Eigen::Vector3f>& queries, std::vector<int>* indices,
-                     std::vector<float>* squared_distances, double max_distance) const;
   std::size_t size() const { return cloud_->size(); }
   // [m] The thinned samples' spacing (never below the source's).
   double spacing() const { return spacing_; }
@@ -68,7 +59,6 @@ class ModelSurface {
   mutable std::vector<std::shared_ptr<const TruncatedDistanceField>> fields_;
   double spacing_;
   Eigen::AlignedBox3d bounds_;
-  bool fields_for_nearest_;
   mutable std::once_flag symmetry_axes_once_;
   mutable std::vector<Eigen::ParametrizedLine<double, 3>> symmetry_axes_;
 };
