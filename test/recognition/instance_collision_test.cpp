@@ -27,10 +27,11 @@ constexpr double kDepth = 0.01;  // the scene estimator's
 constexpr int kMug = 0, kBlock = 1;
 const Eigen::Vector3d kBlockSize(0.16, 0.12, 0.14);  // a box the mug fits in with 2 cm to spare
 
-// A solid block's bundle: collision needs only its surface samples, their normals and bounds.
-std::shared_ptr<const ModelBundle> blockBundle() {
-  const TriangleMesh mesh = makeBoxMesh(kBlockSize);
-  const SurfaceSamples samples = sampleSurface(mesh, 0.004, 1);
+// A solid box's bundle (origin at its base's centre), sampled every `spacing` [m]: collision
+// needs only its surface samples, their normals and bounds.
+std::shared_ptr<const ModelBundle> boxBundle(const Eigen::Vector3d& size, double spacing) {
+  const TriangleMesh mesh = makeBoxMesh(size);
+  const SurfaceSamples samples = sampleSurface(mesh, spacing, 1);
   auto bundle = std::make_shared<ModelBundle>();
   bundle->surface_points = samples.points;
   bundle->surface_normals = samples.normals;
@@ -42,7 +43,7 @@ std::shared_ptr<const ModelBundle> blockBundle() {
 class InstanceCollisionTest : public ::testing::Test {
  protected:
   InstanceCollisionTest()
-      : library_({{"mug", test::quickMugModel()}, {"block", blockBundle()}}),
+      : library_({{"mug", test::quickMugModel()}, {"block", boxBundle(kBlockSize, 0.004)}}),
         collision_(library_),
         mug_(library_.models()[kMug].bundle->bounds) {}
 
@@ -145,25 +146,14 @@ std::shared_ptr<const ModelBundle> plateBundle() {
   return bundle;
 }
 
-// A 1 cm cube's samples, its origin at its base's centre.
-std::shared_ptr<const ModelBundle> smallCubeBundle() {
-  const TriangleMesh mesh = makeBoxMesh(Eigen::Vector3d::Constant(0.01));
-  const SurfaceSamples samples = sampleSurface(mesh, 0.002, 1);
-  auto bundle = std::make_shared<ModelBundle>();
-  bundle->surface_points = samples.points;
-  bundle->surface_normals = samples.normals;
-  const Eigen::AlignedBox3f bounds = mesh.bounds();
-  bundle->bounds = Eigen::AlignedBox3d(bounds.min().cast<double>(), bounds.max().cast<double>());
-  return bundle;
-}
-
 // Inside is told only within 37 degrees of the nearest sample's inward normal. A cube 1.5-2.5 cm
 // under the plate's middle is inside it; the same cube 2.5-3.5 cm beside its edge lies just as
 // far behind the edge samples' tangent plane, but off to the side, 45 degrees or more from their
 // normal: outside. (By the tangent plane alone it would count as wholly inside.)
 TEST(InstanceCollisionCone, APointBesideAnEdgeBehindItsTangentPlaneIsNotInside) {
   constexpr int kPlate = 0, kCube = 1;
-  const ModelLibrary library({{"plate", plateBundle()}, {"cube", smallCubeBundle()}});
+  const ModelLibrary library(
+      {{"plate", plateBundle()}, {"cube", boxBundle(Eigen::Vector3d::Constant(0.01), 0.002)}});
   const InstanceCollision collision(library);
   const Eigen::Isometry3d plate = Eigen::Isometry3d::Identity();
   EXPECT_GT(collision.penetration(kCube, placed(Eigen::Vector3d(0.0, 0.0, -0.025)), kPlate, plate,
