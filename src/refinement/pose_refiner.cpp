@@ -101,6 +101,10 @@ void checkParameters(const RefinementParameters& p) {
     throw Error("refinement's continue_min_score must be in [-1, 1], got " +
                 std::to_string(p.continue_min_score));
   }
+  if (!(p.restart_min_score >= -1.0 && p.restart_min_score <= 1.0)) {
+    throw Error("refinement's restart_min_score must be in [-1, 1], got " +
+                std::to_string(p.restart_min_score));
+  }
   if (!(p.min_score >= -1.0 && p.min_score <= 1.0)) {
     throw Error("refinement's min_score must be in [-1, 1], got " + std::to_string(p.min_score));
   }
@@ -517,12 +521,15 @@ struct Aligner {
   }
 };
 
-// Indices of the `count` best-scoring distinct converged poses, best first.
+// Indices of the `count` best-scoring distinct converged poses verifying at least
+// restart_min_score, best first.
 std::vector<std::size_t> restartSeeds(const std::vector<RefinedPose>& tried, int count,
                                       const RefinementParameters& parameters) {
   std::vector<std::size_t> converged;
   for (std::size_t i = 0; i < tried.size(); ++i) {
-    if (tried[i].converged) converged.push_back(i);
+    if (tried[i].converged && tried[i].score.score() >= parameters.restart_min_score) {
+      converged.push_back(i);
+    }
   }
   std::stable_sort(converged.begin(), converged.end(), [&](std::size_t a, std::size_t b) {
     return tried[a].score.score() > tried[b].score.score();

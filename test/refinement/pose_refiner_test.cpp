@@ -93,6 +93,15 @@ class PoseRefinerTest : public ::testing::Test {
         DepthRenderer(*mesh_).render(camera_from_object, DepthNoiseModel{true}, &rng));
     return result;
   }
+  // A broad belief (the truth stays in its support) centred on the mug turned 120 degrees about
+  // its own axis; call after view(), which places the mug.
+  BinghamMixture wrongTurnBelief() const {
+    const Eigen::Vector3d axis = world_from_object_.linear().col(2);
+    const Eigen::Vector4d wrong =
+        quaternionMultiply(quaternionFromAxisAngle(axis, 2.0 * M_PI / 3.0), truth());
+    return BinghamMixture({1.0}, {concentratedAt(wrong, 5.0)});
+  }
+
   // The view from `direction` with a 3 cm bar standing 18 cm in front of the mug across its
   // middle, upright in the image: `scene` is every point the camera saw, `points` the mug's own
   // (the pixels where the scene's depth is the mug's).
@@ -751,10 +760,7 @@ TEST_F(PoseRefinerTest, RestartsTurnTheHandleFromAWrongTurnAboutTheMugsAxis) {
   // about its own axis: ICP from there fits the body with the handle on the wrong side and
   // stays. Turning that converged pose about the model's axis of near symmetry reaches the truth.
   const RefinementView v = view(kHandleSideOn, 2.1);
-  const Eigen::Vector3d axis = world_from_object_.linear().col(2);
-  const Eigen::Vector4d wrong =
-      quaternionMultiply(quaternionFromAxisAngle(axis, 2.0 * M_PI / 3.0), truth());
-  const BinghamMixture belief({1.0}, {concentratedAt(wrong, 5.0)});
+  const BinghamMixture belief = wrongTurnBelief();
   const RefinementResult restarted = PoseRefiner(*surface_).refine(belief, position(), {v});
   ASSERT_FALSE(restarted.kept.empty()) << describe(restarted, truth());
   // (3.4 degrees measured: the turned start's body sits a few millimetres off, ICP trades that
@@ -769,6 +775,34 @@ TEST_F(PoseRefinerTest, RestartsTurnTheHandleFromAWrongTurnAboutTheMugsAxis) {
   ASSERT_EQ(alone.tried.size(), 1u);
   EXPECT_GT(rotationErrorDeg(alone.tried[0].orientation, truth()), 30.0)
       << describe(alone, truth());
+}
+
+TEST_F(PoseRefinerTest, RestartsOnlyFromASeedVerifyingAtLeastRestartMinScore) {
+  // The wrong turn of RestartsTurnTheHandle... converges and seeds the restarts only while it
+  // verifies at least restart_min_score (below it a pose is taken for another model's misfit).
+  const RefinementView v = view(kHandleSideOn, 2.1);
+  const BinghamMixture belief = wrongTurnBelief();
+  RefinementParameters no_restarts;
+  no_restarts.restart_seeds = 0;
+  const RefinementResult alone =
+      PoseRefiner(*surface_, no_restarts).refine(belief, position(), {v});
+  ASSERT_EQ(alone.tried.size(), 1u);
+  ASSERT_TRUE(alone.tried[0].converged) << describe(alone, truth());
+  const double seed_score = alone.tried[0].score.score();
+  ASSERT_LT(seed_score, 0.99);
+  const auto restarts = [&](double restart_min_score) {
+    RefinementParameters parameters;
+    parameters.restart_min_score = restart_min_score;
+    const RefinementResult result =
+        PoseRefiner(*surface_, parameters).refine(belief, position(), {v});
+    return std::count_if(result.tried.begin(), result.tried.end(),
+                         [](const RefinedPose& pose) { return pose.restarted_from >= 0; });
+  };
+  EXPECT_GT(restarts(seed_score - 0.01), 0);
+  EXPECT_EQ(restarts(seed_score + 0.01), 0);
+  RefinementParameters invalid;
+  invalid.restart_min_score = 1.5;
+  EXPECT_THROW(PoseRefiner(*surface_, invalid), Error);
 }
 
 TEST_F(PoseRefinerTest, RestartsOnlyTheTurnsTheBeliefAllows) {

@@ -91,6 +91,11 @@ struct RefinementParameters {
   int restart_refined = 2;
   double restart_max_log_density_drop = 69.0;
   double restart_score_margin = 0.1;
+  // Only a converged pose verifying at least restart_min_score seeds restarts: a pose explaining
+  // less than half of the points is mostly another model's misfit, not the truth turned (on the
+  // five-model scene command 3 of 474 such restarts reached min_score; skipping them saves a
+  // fifth of a scene's CPU and cost one spool in 538 identifications, doc/performance.md).
+  double restart_min_score = 0.5;
   // Threads that align starts (each ICP is independent; the result does not depend on them).
   int threads = 2;
   // Accepted poses scoring within keep_score_margin of the best are kept; poses within
