@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "view_direction_classification/common/error.h"
+#include "view_direction_classification/common/parallel_for.h"
 #include "view_direction_classification/features/fpfh_features.h"
 #include "view_direction_classification/training/model_training.h"
 
@@ -39,6 +40,9 @@ void checkIdentificationParameters(const IdentificationParameters& p) {
         "identification drop_probability must be in [0, min(min_probability, "
         "track_probability)], got " +
         std::to_string(p.drop_probability));
+  }
+  if (p.threads < 1) {
+    throw Error("identification threads must be >= 1, got " + std::to_string(p.threads));
   }
   if (!(p.max_view_evidence > 0.0) || !std::isfinite(p.max_view_evidence)) {
     throw Error("identification max_view_evidence must be a finite number > 0, got " +
@@ -128,25 +132,36 @@ Identification identifyCandidate(
       allowedFitting(library, candidate_sides, parameters.extent_tolerance, allowed);
   // Every fitting model first refines its own belief; the searches beyond the beliefs (the
   // larger part of a model's cost) run only when no model explained the candidate at once.
+  // The features first (shared, so computed before the models run side by side); each model's
+  // estimator is its own, so the models' updates and searches are independent of each other and
+  // of the order they run in.
   SharedFeatures features(points);
+  std::vector<std::shared_ptr<const FeatureSet>> model_features(library.size());
   for (int m : fitting) {
-    const ModelBundle& bundle = *library.models()[m].bundle;
-    estimators[m] =
-        std::make_unique<OrientationEstimator>(library.models()[m].bundle, instance_parameters);
-    updates[m] = estimators[m]->update(
-        points, world_from_camera, time,
-        {scene, BeliefSearch::kDeferred, features.of(featureParametersOf(bundle.parameters))});
+    model_features[m] = features.of(featureParametersOf(library.models()[m].bundle->parameters));
   }
   result.feature_passes = features.passes();
+  parallelFor(fitting.size(), parameters.threads, [&](int, std::size_t k) {
+    const int m = fitting[k];
+    estimators[m] =
+        std::make_unique<OrientationEstimator>(library.models()[m].bundle, instance_parameters);
+    updates[m] = estimators[m]->update(points, world_from_camera, time,
+                                       {scene, BeliefSearch::kDeferred, model_features[m]});
+  });
   const bool explained_at_once = std::any_of(fitting.begin(), fitting.end(), [&](int m) {
     return !updates[m].search_pending && updates[m].verified_score &&
            *updates[m].verified_score >= instance_parameters.belief_check.search_below_score;
   });
+  if (!explained_at_once) {
+    parallelFor(fitting.size(), parameters.threads, [&](int, std::size_t k) {
+      const int m = fitting[k];
+      if (updates[m].search_pending) {
+        updates[m] = estimators[m]->completeSearch(std::move(updates[m]));
+      }
+    });
+  }
   result.searched.assign(library.size(), false);
   for (int m : fitting) {
-    if (!explained_at_once && updates[m].search_pending) {
-      updates[m] = estimators[m]->completeSearch(std::move(updates[m]));
-    }
     result.searched[m] = updates[m].searched;
     result.scores[m] = updates[m].identity_score;
     if (result.scores[m] && !score_penalties.empty()) *result.scores[m] -= score_penalties[m];

@@ -11,6 +11,7 @@
 #include "piece_groups.h"
 #include "seen_through.h"
 #include "view_direction_classification/common/error.h"
+#include "view_direction_classification/common/parallel_for.h"
 #include "view_direction_classification/estimation/verification_scene.h"
 #include "view_direction_classification/recognition/instance_association.h"
 
@@ -358,33 +359,50 @@ void SceneEstimator::updateAssignedInstances(std::vector<FrameCandidate>& candid
                                              const SceneDepth& scene,
                                              const Eigen::Isometry3d& world_from_camera,
                                              std::optional<double> time, SceneUpdate* result) {
-  for (std::size_t i = 0; i < instances_.size(); ++i) {
-    ObjectInstance& instance = instances_[i];
+  // What each instance sees of this frame: its candidates' points together.
+  struct InstanceView {
+    std::size_t instance = 0;
+    int first = -1;  // its largest candidate: where its update is reported
     pcl::PointCloud<pcl::PointXYZ> points;
     Eigen::Vector3f up = Eigen::Vector3f::Zero();
-    SceneDepth instance_scene = scene;
-    int first = -1;  // its largest candidate: where its update is reported
+    SceneDepth scene;
+    ViewUpdate update;
+  };
+  std::vector<InstanceView> views;
+  for (std::size_t i = 0; i < instances_.size(); ++i) {
+    InstanceView view;
+    view.instance = i;
+    view.scene = scene;
     for (std::size_t c = 0; c < candidates.size(); ++c) {
       if (candidates[c].instance != static_cast<int>(i)) continue;
-      points += candidates[c].points;
-      result->candidates[c].instance = instance.id;
-      if (first >= 0) {
-        result->candidates[c].note = "a part of " + instance.name;
+      view.points += candidates[c].points;
+      result->candidates[c].instance = instances_[i].id;
+      if (view.first >= 0) {
+        result->candidates[c].note = "a part of " + instances_[i].name;
         continue;
       }
-      first = static_cast<int>(c);
-      up = candidates[c].up;
-      instance_scene.support_plane = candidates[c].support;
+      view.first = static_cast<int>(c);
+      view.up = candidates[c].up;
+      view.scene.support_plane = candidates[c].support;
     }
-    if (first < 0) continue;
-    const ViewUpdate update = instance.estimator->update(
-        points, world_from_camera, time, {instance_scene, BeliefSearch::kWhenDue, nullptr});
-    result->candidates[first].update = update;
-    instance.centroid_world = result->candidates[first].centroid_world;
+    if (view.first >= 0) views.push_back(std::move(view));
+  }
+  // Each instance's estimator is its own: their updates are independent of each other and of
+  // the order they run in.
+  parallelFor(views.size(), parameters_.identification.threads, [&](int, std::size_t k) {
+    InstanceView& view = views[k];
+    view.update = instances_[view.instance].estimator->update(
+        view.points, world_from_camera, time, {view.scene, BeliefSearch::kWhenDue, nullptr});
+  });
+  for (InstanceView& view : views) {
+    ObjectInstance& instance = instances_[view.instance];
+    result->candidates[view.first].update = view.update;
+    instance.centroid_world = result->candidates[view.first].centroid_world;
     instance.last_seen = time;
     ++instance.frames_seen;
-    if (update.outcome == FrameOutcome::kFused) {
-      weighIdentity(instance, update, shapes_->penalties(points, up, scene)[instance.model],
+    if (view.update.outcome == FrameOutcome::kFused) {
+      weighIdentity(instance, view.update,
+                    shapes_->penalties(view.points, view.up, scene)[instance.model],
                     world_from_camera);
     }
   }

@@ -101,6 +101,10 @@ void checkParameters(const RefinementParameters& p) {
     throw Error("refinement's continue_min_score must be in [-1, 1], got " +
                 std::to_string(p.continue_min_score));
   }
+  if (!(p.late_continue_min_score >= -1.0 && p.late_continue_min_score <= 1.0)) {
+    throw Error("refinement's late_continue_min_score must be in [-1, 1], got " +
+                std::to_string(p.late_continue_min_score));
+  }
   if (!(p.restart_min_score >= -1.0 && p.restart_min_score <= 1.0)) {
     throw Error("refinement's restart_min_score must be in [-1, 1], got " +
                 std::to_string(p.restart_min_score));
@@ -446,11 +450,12 @@ void polishKept(const ModelSurface& surface, const CountedVoxels& observed,
 }
 
 // Why a start's ICP was abandoned after `iterations`.
-std::string abandonment(int iterations, double score, double continue_min_score) {
+std::string abandonment(int iterations, double score, const char* threshold_name,
+                        double threshold) {
   std::ostringstream reason;
   reason.precision(3);
   reason << "abandoned: after " << iterations << " ICP iterations it verifies " << score
-         << ", below continue_min_score " << continue_min_score;
+         << ", below " << threshold_name << " " << threshold;
   return reason.str();
 }
 
@@ -474,24 +479,49 @@ struct Aligner {
       record(first, std::nullopt, reference, pose);
       return;
     }
-    const double screened = verifier->score(first.object_from_world.inverse()).score();
-    if (screened < parameters->continue_min_score) {
-      record(first, std::nullopt, reference, pose);
-      pose->rejection = abandonment(first.iterations, screened, parameters->continue_min_score);
+    if (abandoned(first, "continue_min_score", parameters->continue_min_score, reference, pose)) {
       return;
     }
     alignRest(worker, first, reference, pose);
   }
 
   // Aligns *pose on from `first`, a short alignment of its start that has not ended, to the end
-  // of a full ICP (max_iterations in all: the same iterations as one from the start), verifies
-  // the result and judges it.
+  // of a full ICP (max_iterations in all: the same iterations as one from the start), screened
+  // once more after late_screening_iterations, verifies the result and judges it.
   void alignRest(int worker, const IcpOutcome& first, const Eigen::Vector4d& reference,
                  RefinedPose* pose) const {
-    IcpOutcome rest =
-        icps[worker]->align(first.object_from_world, parameters->max_iterations - first.iterations);
-    rest.iterations += first.iterations;
+    IcpOutcome rest = first;
+    const int late = std::min(parameters->late_screening_iterations, parameters->max_iterations);
+    if (late > rest.iterations) {
+      rest = alignFurther(worker, rest, late);
+      if (!rest.ended() && rest.iterations < parameters->max_iterations &&
+          abandoned(rest, "late_continue_min_score", parameters->late_continue_min_score, reference,
+                    pose)) {
+        return;
+      }
+    }
+    if (!rest.ended()) rest = alignFurther(worker, rest, parameters->max_iterations);
     record(rest, std::nullopt, reference, pose);
+  }
+
+  // Whether an ICP not ended at `so_far` verifies there below `min_score`: then *pose is
+  // recorded there as abandoned, naming the threshold.
+  bool abandoned(const IcpOutcome& so_far, const char* threshold_name, double min_score,
+                 const Eigen::Vector4d& reference, RefinedPose* pose) const {
+    const double screened = verifier->score(so_far.object_from_world.inverse()).score();
+    if (screened >= min_score) return false;
+    record(so_far, std::nullopt, reference, pose);
+    pose->rejection = abandonment(so_far.iterations, screened, threshold_name, min_score);
+    return true;
+  }
+
+  // ICP on from `so_far` (not ended) until `iterations` in all. In chunks that begin where the
+  // last ended, ICP takes the same path as in one run (IcpAlignment::align).
+  IcpOutcome alignFurther(int worker, const IcpOutcome& so_far, int iterations) const {
+    IcpOutcome further =
+        icps[worker]->align(so_far.object_from_world, iterations - so_far.iterations);
+    further.iterations += so_far.iterations;
+    return further;
   }
 
   // Sets *pose from ICP's outcome and verifies it (unless its score is known) and judges it.

@@ -50,6 +50,8 @@ ParameterTable<SceneRosParameters> makeTable() {
            numberIn(0.0, 1.0, true))
       .add("identity_unknown_score", identification(&IdentificationParameters::unknown_score),
            numberIn(-1.0, 1.0, true))
+      .add("identification_threads", identification(&IdentificationParameters::threads),
+           integerAtLeast(1))
       .add("absent_views", scene(&S::absent_views), integerAtLeast(1))
       .add("forget_gone_after", scene(&S::forget_gone_after),
            numberAtLeast(0.0, "0: gone instances are kept"))

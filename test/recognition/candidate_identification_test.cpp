@@ -53,6 +53,9 @@ TEST(IdentificationParameters, AreCheckedNamingTheBadOne) {
   bad = {};
   bad.unknown_score = 2.0;
   EXPECT_THROW(checkIdentificationParameters(bad), Error);
+  bad = {};
+  bad.threads = 0;
+  EXPECT_THROW(checkIdentificationParameters(bad), Error);
 }
 
 }  // namespace
@@ -96,13 +99,15 @@ std::pair<pcl::PointCloud<pcl::PointXYZ>, Eigen::Isometry3d> viewOf(const Triang
           camera_from_world.inverse()};
 }
 
-Identification identifyAlone(const TriangleMesh& mesh) {
+Identification identifyAlone(const TriangleMesh& mesh, int threads = 2) {
   const ModelLibrary library({{"mug", test::quickMugModel()}, {"flipped", upsideDownMug()}});
   EstimatorParameters instance;
   instance.segmentation.mode = SegmentationMode::kNone;
   const auto [points, world_from_camera] = viewOf(mesh);
+  IdentificationParameters parameters;
+  parameters.threads = threads;
   return identifyCandidate(library, instance, points, Eigen::Vector3d(0.11, 0.09, 0.08), {},
-                           world_from_camera, 0.0, IdentificationParameters());
+                           world_from_camera, 0.0, parameters);
 }
 
 TEST(IdentifyCandidate, AModelThatExplainsTheCandidateAtOnceSparesTheOthersTheirSearch) {
@@ -141,6 +146,20 @@ TEST(IdentifyCandidate, WhenNoModelExplainsTheCandidateAtOnceEveryModelSearches)
   ASSERT_EQ(box.searched.size(), 2u);
   EXPECT_TRUE(box.searched[0]);
   EXPECT_TRUE(box.searched[1]);
+}
+
+// The models run side by side, each with its own estimator: the same scores, to the last bit, as
+// one after the other, for a candidate one model explains at once and for one every model
+// searches.
+TEST(IdentifyCandidate, ModelsTriedSideBySideScoreExactlyAsOneAfterTheOther) {
+  for (const TriangleMesh& mesh : {makeMug(), makeBoxMesh(Eigen::Vector3d(0.09, 0.08, 0.10))}) {
+    const Identification alone = identifyAlone(mesh, 1);
+    const Identification side_by_side = identifyAlone(mesh, 2);
+    EXPECT_EQ(side_by_side.model, alone.model);
+    EXPECT_EQ(side_by_side.scores, alone.scores);
+    EXPECT_EQ(side_by_side.probabilities, alone.probabilities);
+    EXPECT_EQ(side_by_side.searched, alone.searched);
+  }
 }
 
 }  // namespace

@@ -148,6 +148,35 @@ TEST(SceneEstimator, InstancesKeepTheirIdsAndFuseTheirViewsAsTheCameraMoves) {
   }
 }
 
+// Two mugs, three views: with the models and the instances' updates on one thread or side by
+// side, the same instances with the same identities and poses, to the last bit.
+TEST(SceneEstimator, InstancesUpdatedSideBySideEndExactlyAsOneAfterTheOther) {
+  const auto run = [](int threads) {
+    SceneEstimatorParameters parameters;
+    parameters.identification.threads = threads;
+    SceneEstimator estimator(ModelLibrary({{"mug", test::quickMugModel()}}), parameters);
+    const std::vector<Eigen::Vector3d> directions{kFirstView, {0.6, 0.8, 0.9}, {-0.2, 1.0, 0.8}};
+    for (std::size_t v = 0; v < directions.size(); ++v) {
+      const Eigen::Isometry3d pose = worldFromCamera(directions[v]);
+      estimator.update(render(pose, 10 + v), pose, 1.0 * v);
+    }
+    return estimator;
+  };
+  const SceneEstimator alone = run(1);
+  const SceneEstimator side_by_side = run(2);
+  ASSERT_EQ(alone.instances().size(), 2u);
+  ASSERT_EQ(side_by_side.instances().size(), alone.instances().size());
+  for (std::size_t i = 0; i < alone.instances().size(); ++i) {
+    const ObjectInstance& a = alone.instances()[i];
+    const ObjectInstance& b = side_by_side.instances()[i];
+    EXPECT_EQ(a.id, b.id);
+    EXPECT_EQ(a.identity_probability, b.identity_probability) << a.name;
+    EXPECT_EQ(a.estimator->viewsFused(), b.estimator->viewsFused()) << a.name;
+    EXPECT_EQ(a.estimator->mapOrientation(), b.estimator->mapOrientation()) << a.name;
+    EXPECT_EQ(a.estimator->positionEstimate(), b.estimator->positionEstimate()) << a.name;
+  }
+}
+
 TEST(SceneEstimator, AStillCameraIsNotSegmentedAgainAndAnInstanceOutOfViewKeepsItsBelief) {
   SceneEstimator estimator = makeEstimator();
   const Eigen::Isometry3d pose = worldFromCamera(kFirstView);
@@ -336,6 +365,11 @@ namespace {
 
 // A detector's label image of tableScene(): the first mug instance 1 of class 1, the second
 // instance 1 of class 2 (the Cityscapes convention, divisor 1000), everything else background.
+// The mask starts 1 cm above the table. From 3 mm it took in points of the mug's foot and of the
+// noisy table beside it, and on one machine (2026-12-06) 11 of them more than the mask from 1 cm
+// took the first mug's identity score from 0.975 to below unknown's 0.8, though the same tests
+// had passed on the machine before: a mask's edge on the table is a robustness question of its
+// own (doc/evaluation.md, "Scenes with several objects"); these tests are of the label routing.
 LabelImage labelBothMugs(const pcl::PointCloud<pcl::PointXYZ>& cloud,
                          const Eigen::Isometry3d& world_from_camera) {
   LabelImage labels{static_cast<int>(cloud.width), static_cast<int>(cloud.height),
@@ -344,7 +378,7 @@ LabelImage labelBothMugs(const pcl::PointCloud<pcl::PointXYZ>& cloud,
   for (std::size_t i = 0; i < cloud.size(); ++i) {
     if (!std::isfinite(cloud[i].z)) continue;
     const Eigen::Vector3d p = world_from_camera * cloud[i].getVector3fMap().cast<double>();
-    if (p.z() < table + 0.003 || p.z() > table + 0.11) continue;
+    if (p.z() < table + 0.01 || p.z() > table + 0.11) continue;
     if ((p - kFirstMug.translation()).head<2>().norm() < 0.075) labels.labels[i] = 1001;
     if ((p - kSecondMug.translation()).head<2>().norm() < 0.075) labels.labels[i] = 2001;
   }

@@ -102,6 +102,10 @@ class PoseRefinerTest : public ::testing::Test {
     return BinghamMixture({1.0}, {concentratedAt(wrong, 5.0)});
   }
 
+  // The mug side-on, refined from one start turned 0.3 rad about the line of sight (several ICP
+  // steps from the truth), without restarts: the screenings' subject.
+  RefinementResult refineFromATurnedStart(RefinementParameters parameters);
+
   // The view from `direction` with a 3 cm bar standing 18 cm in front of the mug across its
   // middle, upright in the image: `scene` is every point the camera saw, `points` the mug's own
   // (the pixels where the scene's depth is the mug's).
@@ -182,6 +186,28 @@ std::shared_ptr<const ModelSurface>* PoseRefinerTest::surface_ = nullptr;
 
 // Handle seen from the side and above: roll is plain geometry.
 const Eigen::Vector3d kHandleSideOn(0.3, 1.0, 0.4);
+
+// The turned start was abandoned at a screening after `iterations`, naming its threshold.
+void expectAbandoned(const RefinementResult& result, int iterations, const std::string& threshold) {
+  ASSERT_EQ(beliefStarts(result).size(), 1u);
+  EXPECT_FALSE(result.tried[0].accepted);
+  EXPECT_EQ(result.tried[0].icp_iterations, iterations);
+  EXPECT_EQ(
+      result.tried[0].rejection.rfind(
+          "abandoned: after " + std::to_string(iterations) + " ICP iterations it verifies", 0),
+      0u)
+      << result.tried[0].rejection;
+  EXPECT_NE(result.tried[0].rejection.find("below " + threshold + " "), std::string::npos)
+      << result.tried[0].rejection;
+  EXPECT_TRUE(result.kept.empty());
+}
+
+RefinementResult PoseRefinerTest::refineFromATurnedStart(RefinementParameters parameters) {
+  const RefinementView v = view(kHandleSideOn, 1.0);
+  const BinghamMixture belief({1.0}, {concentratedAt(turnedAboutSight(v, 0.3), 20.0)});
+  parameters.restart_seeds = 0;
+  return PoseRefiner(*surface_, parameters).refine(belief, position(), {v});
+}
 
 TEST_F(PoseRefinerTest, RecoversTheRollAlongAGirdle) {
   // The belief knows the viewing direction and nothing about the roll (a view's girdle); the
@@ -731,28 +757,37 @@ TEST_F(PoseRefinerTest, AbandonsAStartStillFittingBadlyAfterTheScreeningIteratio
   // A start turned 0.3 rad from the truth needs several ICP steps. After one it still fits
   // worse than a perfect score, so with continue_min_score 1 it is abandoned there, with why;
   // with the default its ICP goes on and is accepted.
-  const RefinementView v = view(kHandleSideOn, 1.0);
-  const BinghamMixture belief({1.0}, {concentratedAt(turnedAboutSight(v, 0.3), 20.0)});
   RefinementParameters impatient;
   impatient.restart_screening_iterations = 1;
   impatient.continue_min_score = 1.0;
-  impatient.restart_seeds = 0;
-  const RefinementResult abandoned =
-      PoseRefiner(*surface_, impatient).refine(belief, position(), {v});
-  ASSERT_EQ(beliefStarts(abandoned).size(), 1u);
-  EXPECT_FALSE(abandoned.tried[0].accepted);
-  EXPECT_EQ(abandoned.tried[0].icp_iterations, 1);
-  EXPECT_EQ(abandoned.tried[0].rejection.rfind("abandoned: after 1 ICP iterations it verifies", 0),
-            0u)
-      << abandoned.tried[0].rejection;
-  EXPECT_TRUE(abandoned.kept.empty());
+  expectAbandoned(refineFromATurnedStart(impatient), 1, "continue_min_score");
   impatient.continue_min_score = RefinementParameters().continue_min_score;
-  const RefinementResult continued =
-      PoseRefiner(*surface_, impatient).refine(belief, position(), {v});
+  const RefinementResult continued = refineFromATurnedStart(impatient);
   ASSERT_EQ(continued.kept.size(), 1u) << describe(continued, truth());
   EXPECT_GT(continued.tried[0].icp_iterations, 1);
   EXPECT_LT(rotationErrorDeg(continued.kept[0].orientation, truth()), 2.0)
       << describe(continued, truth());
+}
+
+TEST_F(PoseRefinerTest, AbandonsAStartStillFittingBadlyAtTheLateScreening) {
+  // The same start passes the first screening (continue_min_score -1) and is screened again after
+  // late_screening_iterations: still moving and short of a perfect score there, it is abandoned
+  // with why; with the late screening no later than the first it goes on and is accepted.
+  RefinementParameters impatient;
+  impatient.restart_screening_iterations = 1;
+  impatient.continue_min_score = -1.0;
+  impatient.late_screening_iterations = 2;
+  impatient.late_continue_min_score = 1.0;
+  expectAbandoned(refineFromATurnedStart(impatient), 2, "late_continue_min_score");
+  impatient.late_screening_iterations = 1;
+  const RefinementResult continued = refineFromATurnedStart(impatient);
+  ASSERT_EQ(continued.kept.size(), 1u) << describe(continued, truth());
+  EXPECT_GT(continued.tried[0].icp_iterations, 2);
+  EXPECT_LT(rotationErrorDeg(continued.kept[0].orientation, truth()), 2.0)
+      << describe(continued, truth());
+  RefinementParameters invalid;
+  invalid.late_continue_min_score = -1.5;
+  EXPECT_THROW(PoseRefiner(*surface_, invalid), Error);
 }
 
 TEST_F(PoseRefinerTest, RestartsTurnTheHandleFromAWrongTurnAboutTheMugsAxis) {

@@ -41,6 +41,9 @@ struct IdentificationParameters {
   double drop_probability = 0.2;
   // [log-odds] The most one view can add or take: no single view decides alone.
   double max_view_evidence = 3.0;
+  // Fitting models tried on a candidate at once, each on its own thread (each model's refinement
+  // runs its own threads beside them). Their results do not depend on it.
+  int threads = 2;
 };
 
 // Throws vdc::Error naming the first bad parameter.

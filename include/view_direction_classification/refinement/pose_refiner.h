@@ -52,6 +52,11 @@ struct RefinementParameters {
   // onto the surface and crawls on (59 iterations, a quarter of a mug's first view) to a pose
   // verification refuses. It costs one verification more per start not converged by then.
   double continue_min_score = 0.3;
+  // Screened once more after late_screening_iterations (<= restart_screening_iterations: not):
+  // an ICP still moving then whose pose verifies below late_continue_min_score is abandoned too.
+  // Such ICPs crawl on to the iteration limit or to a pose verification refuses.
+  int late_screening_iterations = 30;
+  double late_continue_min_score = 0.45;
   double max_correspondence_distance = 0.015;  // [m]
   // Converged when a step moves the pose by less than both of these.
   double convergence_translation = 1e-4;  // [m]
