@@ -185,4 +185,23 @@ Identification identifyCandidate(
   return result;
 }
 
+bool lowerPenalties(const std::vector<double>& used, const std::vector<double>& lowered,
+                    const IdentificationParameters& parameters, Identification* identification) {
+  if (used.size() != identification->scores.size() ||
+      lowered.size() != identification->scores.size()) {
+    throw Error("lowering penalties needs the used and the lowered penalty of every library model");
+  }
+  std::vector<std::optional<double>> scores = identification->scores;
+  for (std::size_t m = 0; m < scores.size(); ++m) {
+    if (scores[m]) *scores[m] += used[m] - std::min(used[m], lowered[m]);
+  }
+  const std::vector<double> probabilities = identityProbabilities(scores, parameters);
+  const auto best = std::max_element(probabilities.begin(), probabilities.end());
+  if (best - probabilities.begin() != identification->model) return false;
+  identification->scores = std::move(scores);
+  identification->probabilities = probabilities;
+  identification->probability = *best;
+  return true;
+}
+
 }  // namespace vdc

@@ -8,6 +8,7 @@
 #include <string>
 #include <utility>
 
+#include "explained_pieces.h"
 #include "piece_groups.h"
 #include "seen_through.h"
 #include "view_direction_classification/common/error.h"
@@ -253,7 +254,8 @@ SceneUpdate SceneEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
       outcome.note = "not identified: max_identifications reached on this frame";
     } else {
       ++identifications;
-      identify(candidates[c], scene, world_from_camera, time, &outcome);
+      identify(candidates[c], scene, world_from_camera, time, &outcome, true,
+               unassignedBesides(candidates, c));
     }
   }
   identifyAdjacentGroups(cloud, segments, candidates, scene, world_from_camera, time,
@@ -564,7 +566,8 @@ SceneEstimator::UnionOutcome SceneEstimator::identifyPieces(
 
 int SceneEstimator::identify(const FrameCandidate& candidate, const SceneDepth& scene,
                              const Eigen::Isometry3d& world_from_camera, std::optional<double> time,
-                             CandidateOutcome* outcome, bool remember_unknown) {
+                             CandidateOutcome* outcome, bool remember_unknown,
+                             const std::vector<const FrameCandidate*>& others) {
   // A detector's class is the evidence against an unknown simple shape: no penalty then.
   const std::vector<double> penalties =
       candidate.allowed.empty() ? shapes_->penalties(candidate.points, candidate.up, scene)
@@ -574,6 +577,9 @@ int SceneEstimator::identify(const FrameCandidate& candidate, const SceneDepth& 
   Identification identification = identifyCandidate(
       library_, parameters_.instance, candidate.points, outcome->sides, candidate_scene,
       world_from_camera, time, parameters_.identification, penalties, candidate.allowed);
+  if (identification.model >= 0 && !penalties.empty() && !others.empty()) {
+    judgeShapesOnExplainedPieces(candidate, others, scene, penalties, &identification);
+  }
   outcome->probability = identification.probability;
   if (identification.model < 0) {
     outcome->note = identification.reason;
@@ -613,6 +619,36 @@ int SceneEstimator::identify(const FrameCandidate& candidate, const SceneDepth& 
   outcome->instance = instance.id;
   outcome->update = identification.update;
   return index;
+}
+
+std::vector<const SceneEstimator::FrameCandidate*> SceneEstimator::unassignedBesides(
+    const std::vector<FrameCandidate>& candidates, std::size_t candidate) {
+  std::vector<const FrameCandidate*> others;
+  for (std::size_t c = 0; c < candidates.size(); ++c) {
+    if (c != candidate && candidates[c].instance < 0 && !candidates[c].ignored) {
+      others.push_back(&candidates[c]);
+    }
+  }
+  return others;
+}
+
+void SceneEstimator::judgeShapesOnExplainedPieces(const FrameCandidate& candidate,
+                                                  const std::vector<const FrameCandidate*>& others,
+                                                  const SceneDepth& scene,
+                                                  const std::vector<double>& penalties,
+                                                  Identification* identification) const {
+  const std::optional<Eigen::Isometry3d> pose = believedPose(*identification->estimator);
+  if (!pose) return;
+  std::vector<PieceView> pieces;
+  for (const FrameCandidate* other : others)
+    pieces.push_back({&other->points, &other->points_world});
+  int joined = 0;
+  const pcl::PointCloud<pcl::PointXYZ> object =
+      withExplainedPieces(candidate.points, pieces, *explanations_[identification->model], *pose,
+                          parameters_.part_tolerance, parameters_.min_explained_fraction, &joined);
+  if (joined == 0) return;
+  lowerPenalties(penalties, shapes_->penalties(object, candidate.up, scene),
+                 parameters_.identification, identification);
 }
 
 bool SceneEstimator::newOnThisFrame(const ObjectInstance& instance, std::optional<double> time) {

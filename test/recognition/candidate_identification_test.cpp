@@ -43,6 +43,55 @@ TEST(IdentityProbabilities, TwoModelsThatExplainItEquallyShareTheProbability) {
   EXPECT_LT(p[0], 0.5);  // neither reaches min_probability: the candidate stays unknown
 }
 
+// An identification of model 0 made with both models' scores lowered by a shape penalty.
+Identification identifiedWithPenalties(const std::vector<std::optional<double>>& raw_scores,
+                                       const std::vector<double>& penalties) {
+  Identification identification;
+  for (std::size_t m = 0; m < raw_scores.size(); ++m) {
+    identification.scores.push_back(raw_scores[m]);
+    if (raw_scores[m]) *identification.scores.back() -= penalties[m];
+  }
+  identification.probabilities =
+      identityProbabilities(identification.scores, IdentificationParameters{});
+  identification.model = 0;
+  identification.probability = identification.probabilities[0];
+  return identification;
+}
+
+TEST(LowerPenalties, TheScoresRegainWhatThePenaltiesLostAndTheProbabilitiesFollow) {
+  // A flange alone that a can's top explains (penalty 0.17): model 0 barely beats unknown.
+  Identification identification = identifiedWithPenalties({1.0, std::nullopt}, {0.17, 0.17});
+  ASSERT_LT(identification.probability, 0.8);
+  // With the core its pose explains, no simple shape does (penalty 0).
+  ASSERT_TRUE(lowerPenalties({0.17, 0.17}, {0.0, 0.0}, {}, &identification));
+  EXPECT_NEAR(*identification.scores[0], 1.0, 1e-12);
+  EXPECT_FALSE(identification.scores[1].has_value());  // still no verified pose
+  EXPECT_EQ(identification.probabilities, identityProbabilities({1.0, std::nullopt}, {}));
+  EXPECT_GT(identification.probability, 0.95);
+}
+
+TEST(LowerPenalties, AHigherPenaltyNeverReplacesTheOneUsed) {
+  Identification identification = identifiedWithPenalties({1.0, 0.9}, {0.1, 0.1});
+  const Identification before = identifiedWithPenalties({1.0, 0.9}, {0.1, 0.1});
+  ASSERT_TRUE(lowerPenalties({0.1, 0.1}, {0.2, 0.2}, {}, &identification));
+  EXPECT_EQ(identification.scores, before.scores);
+  EXPECT_EQ(identification.probability, before.probability);
+}
+
+TEST(LowerPenalties, LeavesTheIdentificationAloneWhenAnotherModelWouldWin) {
+  // Model 1 verifies better but carried a penalty that model 0 (a simple shape itself) did not:
+  // lowered, model 1 would be the most probable, and the identification holds model 0's
+  // estimator.
+  Identification identification = identifiedWithPenalties({0.95, 0.99}, {0.0, 0.1});
+  ASSERT_EQ(identification.model, 0);
+  ASSERT_GT(identification.probabilities[0], identification.probabilities[1]);
+  const Identification before = identifiedWithPenalties({0.95, 0.99}, {0.0, 0.1});
+  EXPECT_FALSE(lowerPenalties({0.0, 0.1}, {0.0, 0.0}, {}, &identification));
+  EXPECT_EQ(identification.scores, before.scores);
+  EXPECT_EQ(identification.probabilities, before.probabilities);
+  EXPECT_THROW(lowerPenalties({0.0}, {0.0, 0.0}, {}, &identification), Error);
+}
+
 TEST(IdentificationParameters, AreCheckedNamingTheBadOne) {
   IdentificationParameters bad;
   bad.temperature = 0.0;

@@ -95,4 +95,11 @@ Identification identifyCandidate(
     const IdentificationParameters& parameters, const std::vector<double>& score_penalties = {},
     const std::vector<bool>& allowed = {});
 
+// Judges `identification` again with each model's penalty `used` (what its scores carry, as
+// given to identifyCandidate) lowered to `lowered` where that is less: the scores regain the
+// difference and the probabilities follow. Returns false and changes nothing when its model
+// would then no longer be the most probable (the identification holds that model's estimator).
+bool lowerPenalties(const std::vector<double>& used, const std::vector<double>& lowered,
+                    const IdentificationParameters& parameters, Identification* identification);
+
 }  // namespace vdc

@@ -235,9 +235,20 @@ class SceneEstimator {
                               CandidateOutcome* union_outcome = nullptr);
   // remember_unknown: an unknown outcome is remembered (unknowns_) for its centroid.
   // Returns the index of the candidate's instance (a new one, or a known one that moved), or -1.
+  // `others`: the frame's candidates without an instance besides this one; those the identified
+  // pose explains are its pieces (judgeShapesOnExplainedPieces).
   int identify(const FrameCandidate& candidate, const SceneDepth& scene,
                const Eigen::Isometry3d& world_from_camera, std::optional<double> time,
-               CandidateOutcome* outcome, bool remember_unknown = true);
+               CandidateOutcome* outcome, bool remember_unknown = true,
+               const std::vector<const FrameCandidate*>& others = {});
+  static std::vector<const FrameCandidate*> unassignedBesides(
+      const std::vector<FrameCandidate>& candidates, std::size_t candidate);
+  // The shape alternative judged on the candidate with those of `others` the identified pose
+  // explains (explained_pieces.h): the lower penalties stand (lowerPenalties).
+  void judgeShapesOnExplainedPieces(const FrameCandidate& candidate,
+                                    const std::vector<const FrameCandidate*>& others,
+                                    const SceneDepth& scene, const std::vector<double>& penalties,
+                                    Identification* identification) const;
   // The index of the instance of its model the identified object is because the two would
   // share their volume (InstanceOverlap), or -1; the outcome says it moved.
   int sameObject(const Identification& identification, CandidateOutcome* outcome) const;
