@@ -11,8 +11,8 @@ pcl::PointCloud<pcl::PointXYZ> withExplainedPieces(const pcl::PointCloud<pcl::Po
   pcl::PointCloud<pcl::PointXYZ> points = piece;
   *joined = 0;
   for (const PieceView& other : others) {
-    if (explanation.explainedFraction(*other.points_world, world_from_object, tolerance) <
-        min_fraction) {
+    if (!explanation.explainsPart(*other.points_world, world_from_object, tolerance,
+                                  min_fraction)) {
       continue;
     }
     points += *other.points;

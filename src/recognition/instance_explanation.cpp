@@ -21,4 +21,10 @@ double InstanceExplanation::explainedFraction(const std::vector<Eigen::Vector3f>
   return static_cast<double>(explained) / points_world.size();
 }
 
+bool InstanceExplanation::explainsPart(const std::vector<Eigen::Vector3f>& points_world,
+                                       const Eigen::Isometry3d& world_from_object, double tolerance,
+                                       double min_fraction) const {
+  return explainedFraction(points_world, world_from_object, tolerance) >= min_fraction;
+}
+
 }  // namespace vdc

@@ -348,9 +348,9 @@ int SceneEstimator::explainingInstance(const FrameCandidate& candidate) const {
     if (outOfPlace(instance)) continue;
     const std::optional<Eigen::Isometry3d> world_from_object = believedPose(*instance.estimator);
     if (!world_from_object) continue;
-    if (explanations_[instance.model]->explainedFraction(candidate.points_world, *world_from_object,
-                                                         parameters_.part_tolerance) >=
-        parameters_.min_explained_fraction) {
+    if (explanations_[instance.model]->explainsPart(candidate.points_world, *world_from_object,
+                                                    parameters_.part_tolerance,
+                                                    parameters_.min_explained_fraction)) {
       return static_cast<int>(i);
     }
   }

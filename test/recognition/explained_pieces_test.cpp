@@ -83,5 +83,17 @@ TEST_F(ExplainedPiecesTest, NothingJoinsAPoseThatExplainsNoOtherPiece) {
   EXPECT_EQ(joined, 0);
 }
 
+TEST_F(ExplainedPiecesTest, APartNeedsAtLeastTheMinimumFractionOfItsPointsOnTheSurface) {
+  const Piece handle = samples(kHandle, 1.0f);
+  const Piece away = samples(kHandle, 1.0f, Eigen::Vector3d(0.0, 0.2, 0.0));
+  // Every handle point, then as many 20 cm away: half of them on the placed model's surface.
+  std::vector<Eigen::Vector3f> half = handle.points_world;
+  half.insert(half.end(), away.points_world.begin(), away.points_world.end());
+  EXPECT_DOUBLE_EQ(explanation_.explainedFraction(half, world_from_object_, 0.005), 0.5);
+  EXPECT_TRUE(explanation_.explainsPart(half, world_from_object_, 0.005, 0.5));
+  EXPECT_FALSE(explanation_.explainsPart(half, world_from_object_, 0.005, 0.6));
+  EXPECT_FALSE(explanation_.explainsPart({}, world_from_object_, 0.005, 0.1));
+}
+
 }  // namespace
 }  // namespace vdc

@@ -24,6 +24,12 @@ class InstanceExplanation {
   double explainedFraction(const std::vector<Eigen::Vector3f>& points_world,
                            const Eigen::Isometry3d& world_from_object, double tolerance) const;
 
+  // Whether the model placed at world_from_object explains `points_world` as one of its parts:
+  // at least min_fraction of them within tolerance [m] of its surface.
+  bool explainsPart(const std::vector<Eigen::Vector3f>& points_world,
+                    const Eigen::Isometry3d& world_from_object, double tolerance,
+                    double min_fraction) const;
+
  private:
   std::unique_ptr<const NearestPoints> surface_;
 };
