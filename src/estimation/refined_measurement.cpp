@@ -68,7 +68,9 @@ BinghamMixture refinedMeasurement(const RefinementResult& result,
   std::vector<BinghamDistribution> components;
   double total = 0.0;
   const double best = result.kept.front().score.score();
-  for (const RefinedPose& pose : result.kept) {
+  std::vector<RefinedPose> poses = result.kept;
+  poses.insert(poses.end(), result.alternatives.begin(), result.alternatives.end());
+  for (const RefinedPose& pose : poses) {
     components.push_back(BinghamDistribution::fromExponentMatrix(
         poseExponent(pose, parameters.concentration, per_axis * per_axis)));
     log_weights.push_back(parameters.likelihood_scale * (pose.score.score() - best));

@@ -19,6 +19,7 @@
 #include "counted_voxels.h"
 #include "fit_covariance.h"
 #include "icp_alignment.h"
+#include "kept_poses.h"
 #include "roll_sector.h"
 #include "shared_surfaces.h"
 #include "start_screening.h"
@@ -37,6 +38,13 @@ namespace {
 void checkPositive(double value, const char* name) {
   if (!(value > 0.0) || !std::isfinite(value)) {
     throw Error(std::string("refinement's ") + name + " must be positive and finite, got " +
+                std::to_string(value));
+  }
+}
+
+void checkNonNegative(double value, const char* name) {
+  if (!(value >= 0.0) || !std::isfinite(value)) {
+    throw Error(std::string("refinement's ") + name + " must be >= 0 and finite, got " +
                 std::to_string(value));
   }
 }
@@ -70,10 +78,7 @@ void checkParameters(const RefinementParameters& p) {
   checkPositive(p.polish_correspondence_distance, "polish_correspondence_distance");
   checkPositive(p.polish_model_spacing, "polish_model_spacing");
   checkPositive(p.polish_scene_voxel, "polish_scene_voxel");
-  if (!(p.polish_score_tolerance >= 0.0) || !std::isfinite(p.polish_score_tolerance)) {
-    throw Error("refinement's polish_score_tolerance must be >= 0 and finite, got " +
-                std::to_string(p.polish_score_tolerance));
-  }
+  checkNonNegative(p.polish_score_tolerance, "polish_score_tolerance");
   if (p.polish_iterations < 0) {
     throw Error("refinement's polish_iterations must be >= 0, got " +
                 std::to_string(p.polish_iterations));
@@ -131,9 +136,11 @@ void checkParameters(const RefinementParameters& p) {
   if (p.threads < 1) {
     throw Error("refinement's threads must be at least 1, got " + std::to_string(p.threads));
   }
-  if (!(p.keep_score_margin >= 0.0) || !std::isfinite(p.keep_score_margin)) {
-    throw Error("refinement's keep_score_margin must be >= 0 and finite, got " +
-                std::to_string(p.keep_score_margin));
+  checkNonNegative(p.keep_score_margin, "keep_score_margin");
+  checkNonNegative(p.measurement_score_margin, "measurement_score_margin");
+  if (p.max_alternatives < 0) {
+    throw Error("refinement's max_alternatives must be >= 0, got " +
+                std::to_string(p.max_alternatives));
   }
 }
 
@@ -338,32 +345,6 @@ std::string rejection(const RefinedPose& pose, const IcpOutcome& icp, const Bing
   return "";
 }
 
-bool sameAs(const RefinedPose& a, const RefinedPose& b, const RefinementParameters& parameters) {
-  return rotationErrorDeg(a.orientation, b.orientation) < parameters.duplicate_angle_deg &&
-         (a.world_from_object.translation() - b.world_from_object.translation()).norm() <
-             parameters.duplicate_distance;
-}
-
-std::vector<RefinedPose> keptPoses(const std::vector<RefinedPose>& tried,
-                                   const RefinementParameters& parameters) {
-  std::vector<RefinedPose> accepted;
-  for (const RefinedPose& pose : tried) {
-    if (pose.accepted) accepted.push_back(pose);
-  }
-  std::stable_sort(
-      accepted.begin(), accepted.end(),
-      [](const RefinedPose& a, const RefinedPose& b) { return a.score.score() > b.score.score(); });
-  std::vector<RefinedPose> kept;
-  for (const RefinedPose& pose : accepted) {
-    if (pose.score.score() < accepted.front().score.score() - parameters.keep_score_margin) break;
-    const bool duplicate = std::any_of(kept.begin(), kept.end(), [&](const RefinedPose& other) {
-      return sameAs(pose, other, parameters);
-    });
-    if (!duplicate) kept.push_back(pose);
-  }
-  return kept;
-}
-
 // The kept poses with their roll sectors (roll_sector.h), best first; a pose on a better one's
 // sector is that pose again, turned, and is dropped.
 std::vector<RefinedPose> withRollSectors(std::vector<RefinedPose> kept, const ModelSurface& surface,
@@ -442,7 +423,7 @@ void polishKept(const ModelSurface& surface, const CountedVoxels& observed,
     polished.world_from_object = outcome.object_from_world.inverse();
     polished.orientation = orientationOf(polished.world_from_object);
     polished.score = verifier.score(polished.world_from_object);
-    if (sameAs(polished, pose, parameters) &&
+    if (samePose(polished, pose, parameters) &&
         polished.score.score() >= pose.score.score() - parameters.polish_score_tolerance) {
       pose = polished;
     }
@@ -568,7 +549,7 @@ std::vector<std::size_t> restartSeeds(const std::vector<RefinedPose>& tried, int
   for (const std::size_t index : converged) {
     if (static_cast<int>(seeds.size()) >= count) break;
     const bool duplicate = std::any_of(seeds.begin(), seeds.end(), [&](std::size_t seed) {
-      return sameAs(tried[index], tried[seed], parameters);
+      return samePose(tried[index], tried[seed], parameters);
     });
     if (!duplicate) seeds.push_back(index);
   }
@@ -764,6 +745,7 @@ RefinementResult PoseRefiner::refine(const BinghamMixture& belief, const Eigen::
   }
   if (parameters_.roll_sectors)
     result.kept = withRollSectors(std::move(result.kept), *surface_, verifier, parameters_);
+  result.alternatives = verifiedAlternatives(result.tried, result.kept, parameters_);
   const CovarianceBounds bounds{parameters_.min_position_sigma, parameters_.max_position_sigma,
                                 parameters_.min_rotation_sigma_deg * M_PI / 180.0,
                                 parameters_.max_rotation_sigma_deg * M_PI / 180.0};

@@ -93,6 +93,28 @@ TEST(RefinedMeasurement, TheCameraPoseUncertaintyAddsItsVarianceToTheFitsAboutEv
             relativeLogDensity(pose, Eigen::Vector3d::UnitX(), 2.0));
 }
 
+TEST(RefinedMeasurement, AnAlternativeEntersWeightedByItsVerificationBesideTheKeptPoses) {
+  RefinementResult result;
+  result.kept = {keptPose(0.0)};
+  RefinedPose twin = keptPose(0.0);
+  twin.orientation =
+      quaternionMultiply(twin.orientation, quaternionFromAxisAngle(Eigen::Vector3d::UnitX(), M_PI));
+  twin.score.inlier_fraction = 0.90;
+  const BinghamMixture kept_alone = refinedMeasurement(result, {});
+  result.alternatives = {twin};
+  const BinghamMixture measurement = refinedMeasurement(result, {});
+  // The kept pose, the alternative, the outlier component; 0.05 behind: e^(-20 x 0.05).
+  ASSERT_EQ(measurement.components().size(), 3u);
+  EXPECT_NEAR(measurement.weight(1) / measurement.weight(0), std::exp(-1.0), 1e-9);
+  // Without it the twin had only the outlier's floor; with it, e^-1 of the kept pose's density.
+  EXPECT_LT(
+      kept_alone.logDensity(twin.orientation) - kept_alone.logDensity(result.kept[0].orientation),
+      -10.0);
+  EXPECT_NEAR(
+      measurement.logDensity(twin.orientation) - measurement.logDensity(result.kept[0].orientation),
+      -1.0, 0.01);
+}
+
 TEST(RefinedMeasurement, RefusesNoPosesAndInvalidParameters) {
   EXPECT_THROW(refinedMeasurement(RefinementResult{}, RefinedFusionParameters{}), Error);
   RefinementResult result;

@@ -1069,6 +1069,14 @@ TEST_F(PoseRefinerTest, RefusesInvalidParameters) {
   parameters = {};
   parameters.continue_min_score = 1.5;
   EXPECT_THROW(PoseRefiner(*surface_, parameters), Error);
+  parameters = {};
+  parameters.measurement_score_margin = -0.1;
+  EXPECT_THROW(PoseRefiner(*surface_, parameters), Error);
+  parameters.measurement_score_margin = std::nan("");
+  EXPECT_THROW(PoseRefiner(*surface_, parameters), Error);
+  parameters = {};
+  parameters.max_alternatives = -1;
+  EXPECT_THROW(PoseRefiner(*surface_, parameters), Error);
 }
 
 }  // namespace

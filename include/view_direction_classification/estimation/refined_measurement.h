@@ -24,11 +24,12 @@ struct RefinedFusionParameters {
   double camera_pose_uncertainty_deg = 0.0;
 };
 
-// The verified poses (result.kept, q_WO) as one measurement over q_WO: one concentrated Bingham
-// component per pose, shaped by its fit's rotation covariance and left free along its roll
-// sector (pose_refiner.h), weighted by its
-// verification likelihood, plus the uniform outlier component; multiplying the belief by it keeps
-// the belief one Bingham mixture. Throws vdc::Error for no kept poses or invalid parameters
+// The verified poses (result.kept and result.alternatives, q_WO) as one measurement over q_WO:
+// one concentrated Bingham component per pose, shaped by its fit's rotation covariance (the
+// fixed concentration for an alternative, which has none) and left free along its roll sector
+// (pose_refiner.h), weighted by its verification likelihood relative to the best kept pose, plus
+// the uniform outlier component; multiplying the belief by it keeps the belief one Bingham
+// mixture. Throws vdc::Error for no kept poses or invalid parameters
 // (concentration or scale <= 0, outlier weight outside (0, 1), a camera pose uncertainty
 // negative or not finite).
 BinghamMixture refinedMeasurement(const RefinementResult& result,

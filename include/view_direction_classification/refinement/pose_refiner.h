@@ -114,6 +114,16 @@ struct RefinementParameters {
   bool roll_sectors = true;
   double duplicate_angle_deg = 5.0;
   double duplicate_distance = 0.005;  // [m]
+  // Alternatives (doc/method.md, "Refinement"): up to max_alternatives distinct converged poses
+  // verifying within measurement_score_margin of the best kept one, neither kept nor on a kept
+  // pose's roll sector, enter the view's measurement beside the kept ones, whatever refused them
+  // (a score just below min_score, a long ICP step, the credible region), weighted by their
+  // verification like them; they are not reported or polished. A pose 0.04 behind is then
+  // e^-0.8 as likely (refined_measurement.h), not excluded: seen around its handle, a mug's
+  // upside-down twin verifies a few hundredths better or worse from view to view, and the view
+  // that left the truth out made the belief sure of the twin. 0 alternatives: the kept alone.
+  double measurement_score_margin = 0.1;
+  int max_alternatives = 4;
   // A kept pose's translation covariance (fit_covariance.h) has principal standard deviations in
   // [min_position_sigma, max_position_sigma]: the fit's matches are not independent, so below
   // about a quarter of the model's 4 mm sample spacing its own figure would be over-confident.
@@ -181,6 +191,9 @@ struct RefinementResult {
   // roll sector; a pose on a better one's sector is not distinct. Empty when skipped or nothing
   // was accepted; several where geometry cannot tell them apart.
   std::vector<RefinedPose> kept;
+  // Distinct poses beside the kept ones that still enter the measurement (measurement_score_margin
+  // above), best first; their covariances are not computed (zero).
+  std::vector<RefinedPose> alternatives;
   double milliseconds = 0.0;
   bool skipped() const { return !skip_reason.empty(); }
 };
