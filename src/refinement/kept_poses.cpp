@@ -36,6 +36,13 @@ bool samePose(const RefinedPose& a, const RefinedPose& b, const RefinementParame
              parameters.duplicate_distance;
 }
 
+bool onARollSectorOf(const RefinedPose& pose, const std::vector<RefinedPose>& poses,
+                     const RefinementParameters& parameters) {
+  return std::any_of(poses.begin(), poses.end(), [&](const RefinedPose& other) {
+    return onRollSector(other, pose, parameters.duplicate_angle_deg);
+  });
+}
+
 std::vector<RefinedPose> keptPoses(const std::vector<RefinedPose>& tried,
                                    const RefinementParameters& parameters) {
   const std::vector<RefinedPose> accepted =
@@ -59,10 +66,7 @@ std::vector<RefinedPose> verifiedAlternatives(const std::vector<RefinedPose>& tr
   };
   for (const RefinedPose& pose : bestFirst(tried, verified)) {
     if (static_cast<int>(alternatives.size()) >= parameters.max_alternatives) break;
-    const bool on_a_sector = std::any_of(kept.begin(), kept.end(), [&](const RefinedPose& k) {
-      return onRollSector(k, pose, parameters.duplicate_angle_deg);
-    });
-    if (on_a_sector || sameAsAny(pose, kept, parameters) ||
+    if (onARollSectorOf(pose, kept, parameters) || sameAsAny(pose, kept, parameters) ||
         sameAsAny(pose, alternatives, parameters)) {
       continue;
     }

@@ -16,9 +16,14 @@ bool samePose(const RefinedPose& a, const RefinedPose& b, const RefinementParame
 std::vector<RefinedPose> keptPoses(const std::vector<RefinedPose>& tried,
                                    const RefinementParameters& parameters);
 
-// Up to max_alternatives distinct poses of `tried`, best first, accepted or refused only for
-// verifying below min_score, that score within measurement_score_margin of kept.front() and are
-// neither one of `kept` nor on a kept pose's roll sector. Empty when nothing is kept.
+// Whether `pose` lies on the roll sector of one of `poses` (roll_sector.h), within
+// duplicate_angle_deg: that pose again, turned.
+bool onARollSectorOf(const RefinedPose& pose, const std::vector<RefinedPose>& poses,
+                     const RefinementParameters& parameters);
+
+// Up to max_alternatives distinct poses of `tried`, best first, screened in and converged
+// (accepted or not), that score within measurement_score_margin of kept.front() and are neither
+// one of `kept` nor on a kept pose's roll sector. Empty when nothing is kept.
 std::vector<RefinedPose> verifiedAlternatives(const std::vector<RefinedPose>& tried,
                                               const std::vector<RefinedPose>& kept,
                                               const RefinementParameters& parameters);

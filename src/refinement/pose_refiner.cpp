@@ -360,11 +360,7 @@ std::vector<RefinedPose> withRollSectors(std::vector<RefinedPose> kept, const Mo
   }
   std::vector<RefinedPose> distinct;
   for (const RefinedPose& pose : kept) {
-    const bool turned =
-        std::any_of(distinct.begin(), distinct.end(), [&](const RefinedPose& better) {
-          return onRollSector(better, pose, parameters.duplicate_angle_deg);
-        });
-    if (!turned) distinct.push_back(pose);
+    if (!onARollSectorOf(pose, distinct, parameters)) distinct.push_back(pose);
   }
   return distinct;
 }
