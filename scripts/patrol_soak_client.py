@@ -4,7 +4,9 @@ simulated camera passes along an arc over a table with known objects and distrac
 looks away, and between passes a person moves, turns, takes away or puts back objects
 (simulated_depth_camera's ~place_part, seeded). After each pass it asks the estimator's memory
 (~query_instances) and scores it against the truth; once a second it samples each node's
-resident memory and CPU time from /proc. Prints the per-pass log and a summary; exit 1 if a node
+resident memory and CPU time from /proc, and the estimator's heap in use and held as its last
+/diagnostics status gave them (a rise of the first is a leak, of resident memory alone the
+allocator keeping freed pages). Prints the per-pass log and a summary; exit 1 if a node
 died, a service failed, or the memory held more instances than --max-instances.
 
 A part is given as NAME:MODEL:X,Y,YAW:LIFT (MODEL "-" for a distractor; X, Y [m] and YAW [rad]
@@ -96,7 +98,7 @@ class PatrolSoak:
         self.rng = random.Random(args.seed)
         self.parts = [Part(i, spec, args.table_top) for i, spec in enumerate(args.part)]
         self.stop = threading.Event()
-        self.samples = []  # (t, node, rss KiB, cpu s)
+        self.samples = []  # (t, node, rss KiB, cpu s, heap in use MiB or None)
         self.dead = set()
         self.failures = []
         self.passes = []
@@ -226,16 +228,23 @@ class PatrolSoak:
         start = time.monotonic()
         with open(out, "w", newline="") as f:
             writer = csv.writer(f)
-            writer.writerow(["seconds", "node", "rss_kib", "cpu_seconds"])
+            writer.writerow(["seconds", "node", "rss_kib", "cpu_seconds", "heap_in_use_mib",
+                             "heap_held_mib"])
             while not self.stop.is_set():
                 t = time.monotonic() - start
+                with self.lock:
+                    heap = (self.diagnostics.get("heap in use [MiB]"),
+                            self.diagnostics.get("heap held [MiB]"))
                 for name, pid in self.pids.items():
                     got = rss_and_cpu(pid)
                     if got is None:
                         self.dead.add(name)
                         continue
-                    self.samples.append((t, name) + got)
-                    writer.writerow(["%.1f" % t, name, got[0], "%.2f" % got[1]])
+                    node_heap = heap if name == "orientation_estimator" else (None, None)
+                    in_use = float(node_heap[0]) if node_heap[0] else None
+                    self.samples.append((t, name) + got + (in_use,))
+                    writer.writerow(["%.1f" % t, name, got[0], "%.2f" % got[1]] +
+                                    [v or "" for v in node_heap])
                 f.flush()
                 self.stop.wait(1.0)
 
@@ -269,8 +278,9 @@ class PatrolSoak:
         return self.report()
 
     def quarter_figures(self, name, quarter):
-        """Mean RSS [MiB] and CPU use [% of a core] of a node over one quarter of the run."""
-        rows = [(t, rss, cpu) for t, n, rss, cpu in self.samples if n == name]
+        """Mean RSS [MiB], CPU use [% of a core] and mean heap in use [MiB] (None where not
+        reported) of a node over one quarter of the run."""
+        rows = [(t, rss, cpu, heap) for t, n, rss, cpu, heap in self.samples if n == name]
         if len(rows) < 8:
             return None
         end = rows[-1][0]
@@ -279,17 +289,20 @@ class PatrolSoak:
             return None
         rss = sum(r[1] for r in part) / len(part) / 1024
         cpu = 100.0 * (part[-1][2] - part[0][2]) / (part[-1][0] - part[0][0])
-        return rss, cpu
+        heaps = [r[3] for r in part if r[3] is not None]
+        return rss, cpu, (sum(heaps) / len(heaps) if heaps else None)
 
     def report(self):
         n = len(self.passes)
         print("== patrol soak: %.0f s, %d passes, %d changes per pass" % (
             self.elapsed, n, self.args.changes_per_pass))
-        print("per node, each quarter of the run: mean resident memory [MiB] / CPU [% of a core]")
+        print("per node, each quarter of the run: mean resident memory [MiB] / CPU [% of a core]"
+              " / mean heap in use [MiB] (where the node reports it)")
         for name in NODES:
             figures = [self.quarter_figures(name, q) for q in range(4)]
             print("%-24s %s" % (name, "   ".join(
-                "%7.1f / %5.1f" % f if f else "      -" for f in figures)))
+                ("%7.1f / %5.1f" % f[:2] + (" / %6.1f" % f[2] if f[2] is not None else ""))
+                if f else "      -" for f in figures)))
         if n:
             total = lambda key: sum(p[key] for p in self.passes)
             print("after each pass, summed over the %d passes: present %d, right %d (%.1f %%), "

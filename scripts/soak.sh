@@ -20,8 +20,9 @@
 #                  table with two mugs, a box and a cylinder; the camera passes along the table,
 #                  looks away, and between passes two of them are moved, turned, taken away or
 #                  put back (~place_part). Writes patrol_samples.csv (RSS and CPU time per node
-#                  and second) and patrol_passes.csv (the memory scored after each pass). No
-#                  server and no requests. SOAK_SEED seeds the changes (default 1).
+#                  and second, and the estimator's heap in use and held from its /diagnostics)
+#                  and patrol_passes.csv (the memory scored after each pass). No server and no
+#                  requests. SOAK_SEED seeds the changes (default 1).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build_dir=${BUILD_DIR:-build}

@@ -13,6 +13,7 @@
 #include <sstream>
 #include <utility>
 
+#include "heap_diagnostics.h"
 #include "view_direction_classification/common/error.h"
 #include "view_direction_classification/ros/belief_markers.h"
 #include "view_direction_classification/ros/bingham_conversions.h"
@@ -355,6 +356,7 @@ void OrientationEstimatorRos::diagnose(diagnostic_updater::DiagnosticStatusWrapp
   status.add("last measurement [ms]", last_timing_.measurement);
   status.add("last fusion [ms]", last_timing_.fusion);
   status.add("last publishing [ms]", last_publish_ms_);
+  addHeapUsage(status);
 }
 
 }  // namespace vdc

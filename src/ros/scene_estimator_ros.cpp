@@ -14,6 +14,7 @@
 #include <sstream>
 #include <utility>
 
+#include "heap_diagnostics.h"
 #include "instance_query.h"
 #include "view_direction_classification/common/error.h"
 #include "view_direction_classification/recognition/scene_memory_file.h"
@@ -563,6 +564,7 @@ void SceneEstimatorRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& st
              last_segmentation_note_.empty() ? "none" : last_segmentation_note_);
   status.add("last segmentation [ms]", last_segmentation_ms_);
   status.add("last frame [ms]", last_total_ms_);
+  addHeapUsage(status);
 }
 
 }  // namespace vdc

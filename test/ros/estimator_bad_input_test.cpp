@@ -193,6 +193,18 @@ TEST_F(EstimatorBadInput, OlderStampResetsTheBeliefBeforeFusing) {
   EXPECT_GT(third->entropy, second->entropy + 0.8 * (first->entropy - second->entropy));
 }
 
+// A soak tells a leak from the allocator keeping freed pages by this count (doc/performance.md).
+TEST_F(EstimatorBadInput, TheDiagnosticsReportTheHeapInUseAndWhatTheAllocatorHolds) {
+  ASSERT_TRUE(counters_.current(EstimatorDiagnosticsCounters::kReceived, kDiagnosticsTimeout));
+  const std::string in_use = counters_.text("heap in use [MiB]");
+  const std::string held = counters_.text("heap held [MiB]");
+  ASSERT_FALSE(in_use.empty()) << "no heap count on /diagnostics";
+  ASSERT_FALSE(held.empty());
+  // A node with a model loaded holds megabytes, and the allocator holds what is in use.
+  EXPECT_GT(std::stod(in_use), 1.0);
+  EXPECT_GE(std::stod(held), std::stod(in_use));
+}
+
 }  // namespace
 }  // namespace vdc
 

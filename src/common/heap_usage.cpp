@@ -1,0 +1,42 @@
+#include "view_direction_classification/common/heap_usage.h"
+
+#include <cstddef>
+
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
+// A sanitizer's allocator replaces the C library's, whose count then misses every block.
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+#define VDC_SANITIZER_ALLOCATOR 1
+#endif
+#endif
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define VDC_SANITIZER_ALLOCATOR 1
+#endif
+
+namespace vdc {
+namespace {
+
+constexpr double kBytesPerMib = 1024.0 * 1024.0;
+
+}  // namespace
+
+std::optional<HeapUsage> heapUsage() {
+#if defined(__GLIBC__) && !defined(VDC_SANITIZER_ALLOCATOR) && \
+    (__GLIBC__ > 2 || (__GLIBC__ == 2 && __GLIBC_MINOR__ >= 33))
+  // mallinfo2, not mallinfo: the older one's int fields wrap above 2 GiB.
+  const struct mallinfo2 info = mallinfo2();
+  HeapUsage usage;
+  // uordblks: in use in the arenas; hblkhd: large blocks given their own mapping.
+  usage.in_use_mib = static_cast<double>(info.uordblks + info.hblkhd) / kBytesPerMib;
+  // arena: the pages of every thread's arena, summed.
+  usage.held_mib = static_cast<double>(info.arena + info.hblkhd) / kBytesPerMib;
+  return usage;
+#else
+  return std::nullopt;
+#endif
+}
+
+}  // namespace vdc
