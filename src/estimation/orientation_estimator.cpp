@@ -10,6 +10,8 @@
 #include "view_direction_classification/bingham/bingham.h"
 #include "view_direction_classification/common/error.h"
 #include "view_direction_classification/common/quaternion.h"
+#include "view_direction_classification/estimation/camera_pose_covariance.h"
+#include "view_direction_classification/estimation/refined_position.h"
 #include "view_direction_classification/estimation/verification_scene.h"
 #include "view_direction_classification/estimation/view_measurement.h"
 #include "view_direction_classification/features/fpfh_features.h"
@@ -351,7 +353,7 @@ void OrientationEstimator::refineAfterFusion(const pcl::PointCloud<pcl::PointXYZ
     due = searchDueOnView(view, views, position, refinement);
   }
   if (!due) {
-    fuseRefinement(refinement, result);
+    fuseRefinement(refinement, world_from_camera.translation(), result);
     return;
   }
   due->measurement = measurement;
@@ -369,7 +371,7 @@ void OrientationEstimator::refineAfterFusion(const pcl::PointCloud<pcl::PointXYZ
   }
   searchBeyondBelief(due->views, due->position, due->belief_pose, due->belief_score,
                      due->measurement, due->line_of_sight, &due->refinement, result);
-  fuseRefinement(due->refinement, result);
+  fuseRefinement(due->refinement, world_from_camera.translation(), result);
 }
 
 ViewUpdate OrientationEstimator::completeSearch(ViewUpdate update) {
@@ -382,14 +384,16 @@ ViewUpdate OrientationEstimator::completeSearch(ViewUpdate update) {
   update.identity_score.reset();
   searchBeyondBelief(due.views, due.position, due.belief_pose, due.belief_score, due.measurement,
                      due.line_of_sight, &due.refinement, &update);
-  fuseRefinement(due.refinement, &update);
+  fuseRefinement(due.refinement, due.views.front().world_from_camera.translation(), &update);
   const double searched_ms = millisecondsBetween(start, Clock::now());
   update.timing.refinement += searched_ms;
   update.timing.total += searched_ms;
   return update;
 }
 
-void OrientationEstimator::fuseRefinement(const RefinementResult& refinement, ViewUpdate* result) {
+void OrientationEstimator::fuseRefinement(const RefinementResult& refinement,
+                                          const Eigen::Vector3d& camera_position,
+                                          ViewUpdate* result) {
   result->fitted_identity_score = bestFittedIdentityScore(refinement);
   if (refinement.kept.empty()) return;
   filter_.update(refinedMeasurement(refinement, parameters_.refined_fusion));
@@ -397,7 +401,12 @@ void OrientationEstimator::fuseRefinement(const RefinementResult& refinement, Vi
   spread_cache_.reset();
   hypotheses_cache_.reset();
   refined_position_ = refinement.kept.front().world_from_object.translation();
-  refined_position_covariance_ = refinement.kept.front().position_covariance;
+  const RefinedFusionParameters& fusion = parameters_.refined_fusion;
+  refined_position_covariance_ = refinedPositionCovariance(refinement, fusion) +
+                                 modelErrorPositionCovariance(fusion.model_error_mm) +
+                                 cameraPosePositionCovariance(*refined_position_ - camera_position,
+                                                              fusion.camera_pose_uncertainty_deg,
+                                                              fusion.camera_pose_uncertainty_mm);
   result->refined_poses = static_cast<int>(refinement.kept.size());
   result->verified_score = refinement.kept.front().score.score();
   result->identity_score = refinement.kept.front().score.identityScore();

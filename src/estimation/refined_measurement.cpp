@@ -62,6 +62,15 @@ BinghamMixture refinedMeasurement(const RefinementResult& result,
     throw Error("the camera pose uncertainty must be a finite number >= 0, got " +
                 std::to_string(parameters.camera_pose_uncertainty_deg) + " deg");
   }
+  if (!std::isfinite(parameters.camera_pose_uncertainty_mm) ||
+      parameters.camera_pose_uncertainty_mm < 0.0) {
+    throw Error("the camera pose uncertainty must be a finite number >= 0, got " +
+                std::to_string(parameters.camera_pose_uncertainty_mm) + " mm");
+  }
+  if (!std::isfinite(parameters.model_error_mm) || parameters.model_error_mm < 0.0) {
+    throw Error("the model error must be a finite number >= 0, got " +
+                std::to_string(parameters.model_error_mm) + " mm");
+  }
   if (result.kept.empty()) throw Error("no verified poses to fuse");
   const double per_axis = parameters.camera_pose_uncertainty_deg * M_PI / 180.0 / std::sqrt(3.0);
   std::vector<double> log_weights;

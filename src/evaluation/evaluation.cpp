@@ -2,11 +2,14 @@
 
 #include <omp.h>
 
+#include <Eigen/Cholesky>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <exception>
 #include <limits>
+#include <optional>
 #include <random>
 #include <string>
 
@@ -84,11 +87,22 @@ struct RunOutput {
   std::vector<int> views_fused;
   std::vector<double> cone90_deg;
   std::vector<double> position_errors_mm;
+  std::vector<double> position_mahalanobis;
   int skipped = 0;
   double planning_ms = 0, map_ms = 0;
   UpdateTiming stage_ms;  // sums
   int planned = 0;
 };
+
+// sqrt(e^T C^-1 e) of an error e [m] under covariance C [m^2]; NaN without C or for a C that is
+// not positive definite.
+double mahalanobisDistance(const Eigen::Vector3d& error,
+                           const std::optional<Eigen::Matrix3d>& covariance) {
+  if (!covariance || !covariance->allFinite()) return std::numeric_limits<double>::quiet_NaN();
+  const Eigen::LLT<Eigen::Matrix3d> cholesky(*covariance);
+  if (cholesky.info() != Eigen::Success) return std::numeric_limits<double>::quiet_NaN();
+  return cholesky.matrixL().solve(error).norm();
+}
 
 }  // namespace
 
@@ -244,6 +258,23 @@ Eigen::VectorXd SettingErrors::medianPositionPerView() const {
   return medians;
 }
 
+Eigen::VectorXd SettingErrors::positionInsideEllipsoid90PerView() const {
+  if (position_mahalanobis.size() == 0) return {};
+  Eigen::VectorXd fractions(position_mahalanobis.cols());
+  for (Eigen::Index v = 0; v < position_mahalanobis.cols(); ++v) {
+    int counted = 0, inside = 0;
+    for (Eigen::Index s = 0; s < position_mahalanobis.rows(); ++s) {
+      const double distance = position_mahalanobis(s, v);
+      if (std::isnan(distance)) continue;
+      ++counted;
+      if (distance * distance <= kChiSquare3At90) ++inside;
+    }
+    fractions(v) = counted > 0 ? static_cast<double>(inside) / counted
+                               : std::numeric_limits<double>::quiet_NaN();
+  }
+  return fractions;
+}
+
 Eigen::VectorXd SettingErrors::medianPerView() const {
   Eigen::VectorXd medians(errors_deg.cols());
   for (Eigen::Index v = 0; v < errors_deg.cols(); ++v) {
@@ -338,6 +369,9 @@ EvaluationResult evaluateEstimator(std::shared_ptr<const ModelBundle> model,
         const std::optional<Eigen::Vector3d> position = estimator.positionEstimate();
         out.position_errors_mm.push_back(position ? 1000.0 * position->norm()
                                                   : std::numeric_limits<double>::quiet_NaN());
+        out.position_mahalanobis.push_back(
+            position ? mahalanobisDistance(*position, estimator.positionCovariance())
+                     : std::numeric_limits<double>::quiet_NaN());
 #pragma omp critical(vdc_evaluation_progress)
         reportProgress(progress, stage, ++done_views, total_views);
       }
@@ -360,6 +394,7 @@ EvaluationResult evaluateEstimator(std::shared_ptr<const ModelBundle> model,
     setting.views_fused.resize(settings.sequences, settings.views);
     setting.cone90_deg.resize(settings.sequences, settings.views);
     setting.position_errors_mm.resize(settings.sequences, settings.views);
+    setting.position_mahalanobis.resize(settings.sequences, settings.views);
     for (int s = 0; s < settings.sequences; ++s) {
       const RunOutput& out = outputs[static_cast<std::size_t>(s * settings_count + k)];
       for (int v = 0; v < settings.views; ++v) {
@@ -368,6 +403,7 @@ EvaluationResult evaluateEstimator(std::shared_ptr<const ModelBundle> model,
         setting.views_fused(s, v) = out.views_fused[view];
         setting.cone90_deg(s, v) = out.cone90_deg[view];
         setting.position_errors_mm(s, v) = out.position_errors_mm[view];
+        setting.position_mahalanobis(s, v) = out.position_mahalanobis[view];
       }
       setting.skipped_views += out.skipped;
       planning_ms += out.planning_ms;

@@ -86,6 +86,13 @@ ParameterTable<EstimatorRosParameters> makeTable() {
            fieldPath(&P::core, &E::refined_fusion,
                      &RefinedFusionParameters::camera_pose_uncertainty_deg),
            numberAtLeast(0.0, "0: exact camera poses"))
+      .add("camera_pose_uncertainty_mm",
+           fieldPath(&P::core, &E::refined_fusion,
+                     &RefinedFusionParameters::camera_pose_uncertainty_mm),
+           numberAtLeast(0.0, "0: exact camera poses"))
+      .add("model_error_mm",
+           fieldPath(&P::core, &E::refined_fusion, &RefinedFusionParameters::model_error_mm),
+           numberAtLeast(0.0, "0: the mesh is the object"))
       .add("refinement_search_below_score",
            fieldPath(&P::core, &E::belief_check, &BeliefCheckParameters::search_below_score),
            numberIn(0.0, 1.0, true))

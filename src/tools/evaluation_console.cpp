@@ -1,5 +1,6 @@
 #include "evaluation_console.h"
 
+#include <cmath>
 #include <cstdio>
 #include <optional>
 
@@ -24,6 +25,7 @@ void printTimings(const EvaluationResult& result) {
 // The median after views 1, 5, 10, 20 and the last, and when it stays under kConvergedDeg.
 void printInsideCone90(const Eigen::VectorXd& fractions);
 void printConfidentlyWrong(const Eigen::VectorXd& fractions);
+void printPositionInsideEllipsoid90(const Eigen::VectorXd& fractions);
 
 void printSettingMedians(const SettingErrors& setting, int views) {
   const Eigen::VectorXd medians = setting.medianPerView();
@@ -43,6 +45,7 @@ void printSettingMedians(const SettingErrors& setting, int views) {
   }
   printInsideCone90(setting.insideCone90PerView());
   printConfidentlyWrong(setting.confidentlyWrongPerView());
+  printPositionInsideEllipsoid90(setting.positionInsideEllipsoid90PerView());
 }
 
 // The calibration figure after each view (or at each view's end of a stream).
@@ -50,6 +53,21 @@ void printInsideCone90(const Eigen::VectorXd& fractions) {
   if (fractions.size() == 0) return;
   std::printf("        truth inside cone90 after view 1..%d:", static_cast<int>(fractions.size()));
   for (Eigen::Index v = 0; v < fractions.size(); ++v) std::printf(" %.2f", fractions(v));
+  std::printf("\n");
+}
+
+// The position's calibration figure after each view ("-" where no sequence had a covariance).
+void printPositionInsideEllipsoid90(const Eigen::VectorXd& fractions) {
+  if (fractions.size() == 0) return;
+  std::printf("        true position inside its covariance's 90 %% ellipsoid after view 1..%d:",
+              static_cast<int>(fractions.size()));
+  for (Eigen::Index v = 0; v < fractions.size(); ++v) {
+    if (std::isnan(fractions(v))) {
+      std::printf(" -");
+    } else {
+      std::printf(" %.2f", fractions(v));
+    }
+  }
   std::printf("\n");
 }
 

@@ -373,6 +373,22 @@ void addEvaluateOptions(CLI::App& command, EvaluateOptions& options) {
       "poses)")
       ->capture_default_str()
       ->check(nonNegativeFinite());
+  addSetting(
+      command, options, "--camera-pose-uncertainty-mm",
+      [](auto& s) -> auto& { return s.estimator.refined_fusion.camera_pose_uncertainty_mm; },
+      "/estimator/camera_pose_uncertainty_mm",
+      "[mm] RMS shift error of the camera pose that each view's position covariance allows for "
+      "(0: exact poses)")
+      ->capture_default_str()
+      ->check(nonNegativeFinite());
+  addSetting(
+      command, options, "--model-error",
+      [](auto& s) -> auto& { return s.estimator.refined_fusion.model_error_mm; },
+      "/estimator/model_error_mm",
+      "[mm] RMS difference between the object and its mesh that each view's position covariance "
+      "allows for (0: the mesh is the object)")
+      ->capture_default_str()
+      ->check(nonNegativeFinite());
   // Frame selection (estimation/frame_selection.h), in radians as config/estimator.yaml.
   addSetting(
       command, options, "--min-view-separation",

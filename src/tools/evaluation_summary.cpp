@@ -54,7 +54,9 @@ nlohmann::json settingSummary(const SettingErrors& setting, int views) {
       {"median_position_error_mm_after_views", position_after},
       {"views_until_median_below_5deg", converged ? nlohmann::json(*converged) : nlohmann::json()},
       {"inside_cone90_fraction", toVector(setting.insideCone90PerView())},
-      {"confidently_wrong_fraction", toVector(setting.confidentlyWrongPerView())}};
+      {"confidently_wrong_fraction", toVector(setting.confidentlyWrongPerView())},
+      {"position_inside_ellipsoid90_fraction",
+       toVector(setting.positionInsideEllipsoid90PerView())}};
 }
 
 double medianOf(std::vector<double> values) {

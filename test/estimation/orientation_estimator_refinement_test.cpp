@@ -10,7 +10,9 @@
 #include "view_direction_classification/common/error.h"
 #include "view_direction_classification/common/quaternion.h"
 #include "view_direction_classification/common/rotation_error.h"
+#include "view_direction_classification/estimation/camera_pose_covariance.h"
 #include "view_direction_classification/estimation/orientation_estimator.h"
+#include "view_direction_classification/estimation/refined_position.h"
 #include "view_direction_classification/geometry/camera.h"
 #include "view_direction_classification/geometry/depth_renderer.h"
 #include "view_direction_classification/geometry/mug_mesh.h"
@@ -102,6 +104,30 @@ TEST_F(EstimatorRefinementTest, OneViewGivesAGraspReadyPose) {
   EXPECT_FALSE(plain.positionCovariance().has_value());
   // The belief stays a Bingham mixture with the verified pose as its peak.
   EXPECT_GT(refined.belief().density(truth()), plain.belief().density(truth()));
+}
+
+TEST_F(EstimatorRefinementTest,
+       AnUncertainCameraPoseAndModelWidenThePositionCovarianceByTheirShare) {
+  const auto [cloud, world_from_camera] = handleView();
+  EstimatorParameters uncertain = withIcp();
+  uncertain.refined_fusion.camera_pose_uncertainty_deg = 2.0;
+  uncertain.refined_fusion.camera_pose_uncertainty_mm = 5.0;
+  uncertain.refined_fusion.model_error_mm = 3.0;
+  OrientationEstimator exact(model(), withIcp());
+  OrientationEstimator widened(model(), uncertain);
+  exact.update(cloud, world_from_camera);
+  widened.update(cloud, world_from_camera);
+  ASSERT_TRUE(exact.positionCovariance() && widened.positionCovariance());
+  // The same fit (the camera's error does not enter it), so the difference is the camera's.
+  ASSERT_LT((*widened.positionEstimate() - *exact.positionEstimate()).norm(), 1e-9);
+  const Eigen::Matrix3d added =
+      cameraPosePositionCovariance(*exact.positionEstimate() - world_from_camera.translation(), 2.0,
+                                   5.0) +
+      modelErrorPositionCovariance(3.0);
+  EXPECT_TRUE((*widened.positionCovariance() - *exact.positionCovariance()).isApprox(added, 1e-9));
+  // 2 degrees at about 0.6 m: centimetres, where the fit alone says millimetres.
+  EXPECT_GT(std::sqrt(widened.positionCovariance()->trace()), 0.01);
+  EXPECT_GT(widened.positionCovariance()->trace(), 10.0 * exact.positionCovariance()->trace());
 }
 
 TEST_F(EstimatorRefinementTest, ASkippedRefinementLeavesTheBeliefAsWithout) {

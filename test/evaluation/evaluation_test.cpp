@@ -61,6 +61,11 @@ void expectErrorsInRange(const EvaluationResult& result, const EvaluationSetting
       EXPECT_LT(error, 300.0);
     }
     EXPECT_FALSE(std::isnan(setting.medianPositionPerView()(settings.views - 1)));
+    // The refined position comes with its covariance: a distance wherever a position does not
+    // come from the centroid alone.
+    ASSERT_EQ(setting.position_mahalanobis.rows(), settings.sequences);
+    ASSERT_EQ(setting.position_mahalanobis.cols(), settings.views);
+    EXPECT_FALSE(std::isnan(setting.positionInsideEllipsoid90PerView()(settings.views - 1)));
   }
 }
 
@@ -73,6 +78,21 @@ TEST(EvaluationTest, TheCalibrationFigureIsTheFractionOfSequencesWithTheErrorWit
   // View 1: 10 <= 15, 20 <= 20, 40 <= 45 inside; view 2: 1 <= 5 and 3 <= 5 inside.
   EXPECT_TRUE(setting.insideCone90PerView().isApprox(Eigen::Vector2d(0.75, 0.5)));
   EXPECT_EQ(SettingErrors().insideCone90PerView().size(), 0) << "no trust signals, no figure";
+}
+
+TEST(EvaluationTest, ThePositionFigureIsTheFractionWithinTheCovariances90PercentEllipsoid) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  SettingErrors setting;
+  setting.position_mahalanobis.resize(4, 2);
+  // chi-square(3) at 0.9 is 6.25: a distance of 2.5 (6.25) is just inside, 2.51 outside.
+  setting.position_mahalanobis << 1.0, nan, 2.5, nan, 2.51, 0.5, 3.0, nan;
+  const Eigen::VectorXd fractions = setting.positionInsideEllipsoid90PerView();
+  ASSERT_EQ(fractions.size(), 2);
+  EXPECT_DOUBLE_EQ(fractions(0), 0.5);
+  EXPECT_DOUBLE_EQ(fractions(1), 1.0) << "only the sequences with a covariance count";
+  setting.position_mahalanobis.setConstant(nan);
+  EXPECT_TRUE(setting.positionInsideEllipsoid90PerView().array().isNaN().all());
+  EXPECT_EQ(SettingErrors().positionInsideEllipsoid90PerView().size(), 0);
 }
 
 TEST(EvaluationTest, ConfidentlyWrongIsAnErrorBeyondTwiceCone90AndBeyondTheFloor) {

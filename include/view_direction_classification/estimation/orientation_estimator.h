@@ -302,7 +302,9 @@ class OrientationEstimator {
                                            const Eigen::Vector3d& position,
                                            const RefinementResult& refinement);
   // The view's kept poses fused as a measurement; the position estimate and the scores follow.
-  void fuseRefinement(const RefinementResult& refinement, ViewUpdate* result);
+  // camera_position: the fixed frame's camera of the view refined (camera_pose_covariance.h).
+  void fuseRefinement(const RefinementResult& refinement, const Eigen::Vector3d& camera_position,
+                      ViewUpdate* result);
   // search_below_score, or lower once a search on this camera's views found nothing better
   // than a belief pose that verified at confirmed_fit_score_: rebuild_margin below that.
   double searchThreshold() const;

@@ -22,6 +22,16 @@ struct RefinedFusionParameters {
   // (camera_pose_uncertainty_deg / sqrt(3))^2 per axis (camera_pose_error.h's noise model).
   // 0: the poses are exact (a simulator's, or a well-calibrated robot's).
   double camera_pose_uncertainty_deg = 0.0;
+  // The camera pose's shift error [mm, RMS]. Neither it nor the rotation error above leaves the
+  // position alone: each view's refined position covariance grows by what they do to it
+  // (camera_pose_covariance.h), so that a robot does not trust a millimetre fit that its tf puts
+  // centimetres off. 0 and 0: the fit's covariance alone.
+  double camera_pose_uncertainty_mm = 0.0;
+  // How far the object's surface may differ from the model's [mm, RMS]: a CAD mesh of a mug
+  // another one's glaze made thicker, a scan of another item of the product. The fit places
+  // the model's origin off by about that much, so each view's refined position covariance grows
+  // by (model_error_mm / sqrt(3))^2 per axis. 0: the mesh is the object.
+  double model_error_mm = 0.0;
 };
 
 // The verified poses (result.kept and result.alternatives, q_WO) as one measurement over q_WO:
@@ -30,8 +40,8 @@ struct RefinedFusionParameters {
 // (pose_refiner.h), weighted by its verification likelihood relative to the best kept pose, plus
 // the uniform outlier component; multiplying the belief by it keeps the belief one Bingham
 // mixture. Throws vdc::Error for no kept poses or invalid parameters
-// (concentration or scale <= 0, outlier weight outside (0, 1), a camera pose uncertainty
-// negative or not finite).
+// (concentration or scale <= 0, outlier weight outside (0, 1), a camera pose uncertainty,
+// shift or model error negative or not finite).
 BinghamMixture refinedMeasurement(const RefinementResult& result,
                                   const RefinedFusionParameters& parameters);
 

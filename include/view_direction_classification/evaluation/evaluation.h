@@ -132,6 +132,16 @@ struct SettingErrors {
   Eigen::VectorXd confidentlyWrongPerView(double min_error_deg = kConfidentlyWrongMinDeg) const;
   // The same for the position errors, over the sequences that have one (NaN: none has).
   Eigen::VectorXd medianPositionPerView() const;
+  // sequences x views: the position error's Mahalanobis distance under the position covariance
+  // the estimator reports with it (OrientationEstimator::positionCovariance), sqrt(e^T C^-1 e);
+  // NaN where there is no position or no covariance. Empty for a single-view method.
+  Eigen::MatrixXd position_mahalanobis;
+  // The position's calibration figure: the fraction of the sequences with a covariance whose
+  // true position lies inside the covariance's 90 % ellipsoid after each view (distance^2 at
+  // most kChiSquare3At90, the 0.9 quantile of chi-square with 3 degrees of freedom). An honest
+  // covariance gives ~0.9; NaN where no sequence has one, empty without the matrix.
+  static constexpr double kChiSquare3At90 = 6.2514;
+  Eigen::VectorXd positionInsideEllipsoid90PerView() const;
 };
 
 // The median of the `count` values that are not NaN; NaN when none is.
