@@ -248,7 +248,8 @@ TEST_F(EvaluateOptionsTest, SummaryRecordsEverySettingARunUsedUnderItsKey) {
       "--refinement-views 3 --search-below-score 0.5 --no-noise "
       "--min-view-separation 0.2 --independent-view-separation 0.5 --stream-rate 15 --dwell 3 "
       "--refinement icp --camera-pose-noise 1,5 --hand-eye-bias 2,4 --mesh-scale 1,1,1.03 "
-      "--mesh-dents 3,1.5 --camera-pose-uncertainty 2.5");
+      "--mesh-dents 3,1.5 --camera-pose-uncertainty 2.5 --camera-pose-uncertainty-mm 7 "
+      "--model-error 4");
   ModelBundle model;
   model.parameters.distance = 0.7;
   const EvaluationSettings used =
@@ -279,7 +280,9 @@ TEST_F(EvaluateOptionsTest, SummaryRecordsEverySettingARunUsedUnderItsKey) {
                                      {"min_view_separation", 0.2},
                                      {"independent_view_separation", 0.5},
                                      {"refinement", "icp"},
-                                     {"camera_pose_uncertainty_deg", 2.5}}}};
+                                     {"camera_pose_uncertainty_deg", 2.5},
+                                     {"camera_pose_uncertainty_mm", 7.0},
+                                     {"model_error_mm", 4.0}}}};
   EXPECT_EQ(recordedSettings(options_, used), expected);
 }
 
