@@ -45,7 +45,20 @@ Eigen::Matrix4d poseExponent(const RefinedPose& pose, double concentration, doub
   return -2.0 * turns * information * turns.transpose();
 }
 
+// A camera pose or model error [unit, RMS] must be a finite number >= 0.
+void checkError(double value, const char* what, const char* unit) {
+  if (!std::isfinite(value) || value < 0.0) {
+    throw Error(std::string(what) + " must be a finite number >= 0, got " + std::to_string(value) +
+                " " + unit);
+  }
+}
+
 }  // namespace
+
+double measurementLogWeight(const RefinedPose& pose, const RefinedPose& best,
+                            const RefinedFusionParameters& parameters) {
+  return parameters.likelihood_scale * (pose.score.score() - best.score.score());
+}
 
 BinghamMixture refinedMeasurement(const RefinementResult& result,
                                   const RefinedFusionParameters& parameters) {
@@ -57,32 +70,22 @@ BinghamMixture refinedMeasurement(const RefinementResult& result,
     throw Error("refinement's outlier weight must be in (0, 1), got " +
                 std::to_string(parameters.outlier_weight));
   }
-  if (!std::isfinite(parameters.camera_pose_uncertainty_deg) ||
-      parameters.camera_pose_uncertainty_deg < 0.0) {
-    throw Error("the camera pose uncertainty must be a finite number >= 0, got " +
-                std::to_string(parameters.camera_pose_uncertainty_deg) + " deg");
-  }
-  if (!std::isfinite(parameters.camera_pose_uncertainty_mm) ||
-      parameters.camera_pose_uncertainty_mm < 0.0) {
-    throw Error("the camera pose uncertainty must be a finite number >= 0, got " +
-                std::to_string(parameters.camera_pose_uncertainty_mm) + " mm");
-  }
-  if (!std::isfinite(parameters.model_error_mm) || parameters.model_error_mm < 0.0) {
-    throw Error("the model error must be a finite number >= 0, got " +
-                std::to_string(parameters.model_error_mm) + " mm");
-  }
+  // All of them here, before the estimator fuses anything: the position's covariance uses the
+  // last two after the fusion.
+  checkError(parameters.camera_pose_uncertainty_deg, "the camera pose uncertainty", "deg");
+  checkError(parameters.camera_pose_uncertainty_mm, "the camera pose uncertainty", "mm");
+  checkError(parameters.model_error_mm, "the model error", "mm");
   if (result.kept.empty()) throw Error("no verified poses to fuse");
   const double per_axis = parameters.camera_pose_uncertainty_deg * M_PI / 180.0 / std::sqrt(3.0);
   std::vector<double> log_weights;
   std::vector<BinghamDistribution> components;
   double total = 0.0;
-  const double best = result.kept.front().score.score();
   std::vector<RefinedPose> poses = result.kept;
   poses.insert(poses.end(), result.alternatives.begin(), result.alternatives.end());
   for (const RefinedPose& pose : poses) {
     components.push_back(BinghamDistribution::fromExponentMatrix(
         poseExponent(pose, parameters.concentration, per_axis * per_axis)));
-    log_weights.push_back(parameters.likelihood_scale * (pose.score.score() - best));
+    log_weights.push_back(measurementLogWeight(pose, result.kept.front(), parameters));
     total += std::exp(log_weights.back());
   }
   // The outlier share of the whole measurement's mass.

@@ -18,8 +18,7 @@ Eigen::Matrix3d refinedPositionCovariance(const RefinementResult& result,
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
   double total = 0.0;
   const auto add = [&](const RefinedPose& pose, const Eigen::Matrix3d& fit) {
-    const double weight =
-        std::exp(parameters.likelihood_scale * (pose.score.score() - reported.score.score()));
+    const double weight = std::exp(measurementLogWeight(pose, reported, parameters));
     const Eigen::Vector3d offset = pose.world_from_object.translation() - position;
     covariance += weight * (fit + offset * offset.transpose());
     total += weight;

@@ -45,4 +45,9 @@ struct RefinedFusionParameters {
 BinghamMixture refinedMeasurement(const RefinementResult& result,
                                   const RefinedFusionParameters& parameters);
 
+// A measured pose's log weight relative to the best kept pose's, likelihood_scale x (its score -
+// the best's): refinedMeasurement's components, and refinedPositionCovariance's spread.
+double measurementLogWeight(const RefinedPose& pose, const RefinedPose& best,
+                            const RefinedFusionParameters& parameters);
+
 }  // namespace vdc
