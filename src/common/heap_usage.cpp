@@ -6,15 +6,7 @@
 #include <malloc.h>
 #endif
 
-// A sanitizer's allocator replaces the C library's, whose count then misses every block.
-#if defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
-#define VDC_SANITIZER_ALLOCATOR 1
-#endif
-#endif
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-#define VDC_SANITIZER_ALLOCATOR 1
-#endif
+#include "sanitizer_allocator.h"
 
 namespace vdc {
 namespace {

@@ -66,7 +66,10 @@ OrientationEstimatorRos::OrientationEstimatorRos(ros::NodeHandle node, ros::Node
 
   startReconfigureServer();
   worker_ = std::make_unique<NewestCloudWorker>(
-      [this](const sensor_msgs::PointCloud2& cloud) { processCloud(cloud); },
+      [this](const sensor_msgs::PointCloud2& cloud) {
+        processCloud(cloud);
+        heap_release_.afterFrame(monotonicSeconds());
+      },
       [this](const std::string& reason) { skip(reason); });
   // Queue of one: the worker only ever wants the newest cloud.
   cloud_subscriber_ = node_.subscribe("cloud", 1, &OrientationEstimatorRos::cloudCallback, this);
@@ -356,7 +359,7 @@ void OrientationEstimatorRos::diagnose(diagnostic_updater::DiagnosticStatusWrapp
   status.add("last measurement [ms]", last_timing_.measurement);
   status.add("last fusion [ms]", last_timing_.fusion);
   status.add("last publishing [ms]", last_publish_ms_);
-  addHeapUsage(status);
+  addHeapUsage(status, heap_release_);
 }
 
 }  // namespace vdc

@@ -17,6 +17,7 @@
 #include <string>
 
 #include "estimator_ros_parameters.h"
+#include "heap_diagnostics.h"
 #include "newest_cloud_worker.h"
 #include "view_direction_classification/OrientationEstimatorConfig.h"
 #include "view_direction_classification/estimation/orientation_estimator.h"
@@ -100,6 +101,8 @@ class OrientationEstimatorRos {
   boost::recursive_mutex reconfigure_mutex_;
   std::unique_ptr<dynamic_reconfigure::Server<OrientationEstimatorConfig>> reconfigure_server_;
 
+  // Gives the heap's free pages back after the worker's clouds, at most every 10 s.
+  PeriodicHeapRelease heap_release_{kNodeHeapReleasePeriodSeconds};
   // The newest unprocessed cloud's hand-over to the worker thread that processes it.
   std::unique_ptr<NewestCloudWorker> worker_;
 

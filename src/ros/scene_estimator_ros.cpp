@@ -112,7 +112,10 @@ SceneEstimatorRos::SceneEstimatorRos(ros::NodeHandle node, ros::NodeHandle priva
                                   [this](const ros::TimerEvent&) { rebroadcastTransforms(); });
   }
   worker_ = std::make_unique<NewestCloudWorker>(
-      [this](const sensor_msgs::PointCloud2& cloud) { processCloud(cloud); },
+      [this](const sensor_msgs::PointCloud2& cloud) {
+        processCloud(cloud);
+        heap_release_.afterFrame(monotonicSeconds());
+      },
       [this](const std::string& reason) { skip(reason); });
   // The label images first: a cloud's own image must not be missed because its subscription
   // came second.
@@ -564,7 +567,7 @@ void SceneEstimatorRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& st
              last_segmentation_note_.empty() ? "none" : last_segmentation_note_);
   status.add("last segmentation [ms]", last_segmentation_ms_);
   status.add("last frame [ms]", last_total_ms_);
-  addHeapUsage(status);
+  addHeapUsage(status, heap_release_);
 }
 
 }  // namespace vdc

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "estimator_ros_parameters.h"
+#include "heap_diagnostics.h"
 #include "instance_messages.h"
 #include "label_image_buffer.h"
 #include "newest_cloud_worker.h"
@@ -121,6 +122,8 @@ class SceneEstimatorRos {
   diagnostic_updater::Updater diagnostics_;
   ros::Timer diagnostics_timer_;
 
+  // Gives the heap's free pages back after the worker's clouds, at most every 10 s.
+  PeriodicHeapRelease heap_release_{kNodeHeapReleasePeriodSeconds};
   // The newest unprocessed cloud's hand-over to the worker thread that processes it.
   std::unique_ptr<NewestCloudWorker> worker_;
 

@@ -205,6 +205,23 @@ TEST_F(EstimatorBadInput, TheDiagnosticsReportTheHeapInUseAndWhatTheAllocatorHol
   EXPECT_GE(std::stod(held), std::stod(in_use));
 }
 
+TEST_F(EstimatorBadInput, AfterACloudTheNodeGivesItsHeapsFreePagesBack) {
+  // Any cloud the worker took: it releases once the cloud is done, and the first cloud after
+  // start-up always releases.
+  expectSurvivesWithoutEstimate(xyzCloud(0, 0, kCameraFrame), "an empty cloud");
+  std::string releases;
+  for (ros::WallTime end = ros::WallTime::now() + ros::WallDuration(kDiagnosticsTimeout);
+       ros::WallTime::now() < end; ros::WallDuration(0.1).sleep()) {
+    releases = counters_.text("heap releases");
+    if (!releases.empty() && std::stoi(releases) >= 1) break;
+  }
+  ASSERT_FALSE(releases.empty()) << "no heap release count on /diagnostics";
+  EXPECT_GE(std::stoi(releases), 1);
+  const std::string released = counters_.text("heap given back by the last release [MiB]");
+  ASSERT_FALSE(released.empty());
+  EXPECT_GE(std::stod(released), 0.0);
+}
+
 }  // namespace
 }  // namespace vdc
 
