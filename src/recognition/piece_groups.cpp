@@ -91,6 +91,12 @@ std::vector<std::vector<std::size_t>> adjacentCandidateGroups(
       with_cluster = cluster_of(i);
       with_cluster.push_back(j);
       add(with_cluster);
+      // Both clusters whole: an object whose near part hides its middle falls into two clusters,
+      // each of them in pieces (an elephant's head and trunk in front of its body).
+      std::vector<std::size_t> both = cluster_of(i);
+      const std::vector<std::size_t> other = cluster_of(j);
+      both.insert(both.end(), other.begin(), other.end());
+      add(both);
     }
   }
   const auto points = [&](const std::vector<std::size_t>& group) {
@@ -98,8 +104,17 @@ std::vector<std::vector<std::size_t>> adjacentCandidateGroups(
     for (std::size_t k : group) total += candidates[k]->indices.size();
     return total;
   };
-  std::stable_sort(groups.begin(), groups.end(),
-                   [&](const auto& a, const auto& b) { return points(a) < points(b); });
+  const auto clusters = [&](const std::vector<std::size_t>& group) {
+    std::set<int> spanned;
+    for (std::size_t k : group) spanned.insert(candidates[k]->cluster);
+    return spanned.size();
+  };
+  std::stable_sort(groups.begin(), groups.end(), [&](const auto& a, const auto& b) {
+    const bool a_across = clusters(a) > 1;
+    const bool b_across = clusters(b) > 1;
+    if (a_across != b_across) return a_across;
+    return points(a) < points(b);
+  });
   return groups;
 }
 

@@ -16,10 +16,13 @@ namespace vdc {
 // the core behind it) even puts its parts in different clusters. Such parts lie side by side in
 // the image. Returns the pairs of candidates beside each other in the image (some of their rays
 // closer than the angle touch_distance [m] spans at the points' range, in front or behind) and,
-// for a pair from two clusters, each with the other's cluster (its candidates among these): each
-// group once, fewest points first (an object's pieces are small; a large union of several
-// objects fails, and costs more), as positions into candidates. The cloud is in the camera frame
-// (rays from the origin).
+// for a pair from two clusters, each with the other's cluster and the two clusters together
+// (their candidates among these): each group once, as positions into candidates. The groups that
+// span clusters come first: the scene layer has tried each cluster whole and its pieces alone
+// before the groups, so an object the depth jump put into two clusters is still untried, while a
+// pair within a cluster is a part of what was tried. Within each kind fewest points first (an
+// object's pieces are small; a large union of several objects fails, and costs more). The cloud
+// is in the camera frame (rays from the origin).
 std::vector<std::vector<std::size_t>> adjacentCandidateGroups(
     const pcl::PointCloud<pcl::PointXYZ>& cloud,
     const std::vector<const SceneCandidate*>& candidates, double touch_distance);

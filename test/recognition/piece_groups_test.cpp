@@ -34,6 +34,13 @@ std::vector<const SceneCandidate*> pointers(const std::vector<SceneCandidate>& c
   return result;
 }
 
+std::size_t points(const std::vector<SceneCandidate>& candidates,
+                   const std::vector<std::size_t>& group) {
+  std::size_t total = 0;
+  for (std::size_t k : group) total += candidates[k].indices.size();
+  return total;
+}
+
 bool contains(const std::vector<std::vector<std::size_t>>& groups,
               const std::vector<std::size_t>& group) {
   return std::find(groups.begin(), groups.end(), group) != groups.end();
@@ -64,15 +71,36 @@ TEST(AdjacentCandidateGroups, APartBesideAPieceIsAlsoTriedWithThatPiecesWholeClu
   EXPECT_TRUE(contains(groups, {0, 1}));
   EXPECT_TRUE(contains(groups, {0, 1, 2})) << "the near part with the core's whole cluster";
   EXPECT_FALSE(contains(groups, {0, 2})) << "the far flange is not beside the near one";
-  // Fewest points first.
+  // The groups across the two clusters, then those within one; each kind fewest points first.
+  const auto across = [&](const std::vector<std::size_t>& group) {
+    return std::any_of(group.begin(), group.end(),
+                       [&](std::size_t k) { return candidates[k].cluster == 0; }) &&
+           std::any_of(group.begin(), group.end(),
+                       [&](std::size_t k) { return candidates[k].cluster == 1; });
+  };
+  EXPECT_TRUE(across(groups.front()));
+  EXPECT_FALSE(across(groups.back())) << "the core and the far flange, within cluster 1";
   for (std::size_t g = 1; g < groups.size(); ++g) {
-    const auto points = [&](const std::vector<std::size_t>& group) {
-      std::size_t total = 0;
-      for (std::size_t k : group) total += candidates[k].indices.size();
-      return total;
-    };
-    EXPECT_LE(points(groups[g - 1]), points(groups[g]));
+    if (across(groups[g - 1]) != across(groups[g])) continue;
+    EXPECT_LE(points(candidates, groups[g - 1]), points(candidates, groups[g]));
   }
+}
+
+TEST(AdjacentCandidateGroups, TwoClustersBesideEachOtherAreTriedWholeBeforePairsWithinOne) {
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  std::vector<SceneCandidate> candidates;
+  // An elephant's head and trunk (cluster 0, two pieces) in front of its body (cluster 1, two
+  // pieces), 6 cm behind; the head's right piece is beside the body's left one in the image.
+  candidates.push_back(patch(&cloud, 0.0, 0.0, 0.80, 10, 10, 0));
+  candidates.push_back(patch(&cloud, 0.0225, 0.0, 0.80, 10, 10, 0));
+  candidates.push_back(patch(&cloud, 0.0475, 0.0, 0.86, 10, 10, 1));
+  candidates.push_back(patch(&cloud, 0.0700, 0.0, 0.86, 10, 10, 1));
+  const auto groups = adjacentCandidateGroups(cloud, pointers(candidates), 0.01);
+  const auto whole = std::find(groups.begin(), groups.end(), std::vector<std::size_t>{0, 1, 2, 3});
+  ASSERT_NE(whole, groups.end()) << "both clusters whole";
+  const auto within = std::find(groups.begin(), groups.end(), std::vector<std::size_t>{0, 1});
+  ASSERT_NE(within, groups.end()) << "the head's two pieces";
+  EXPECT_LT(whole, within) << "the groups across clusters come first, though larger";
 }
 
 TEST(AdjacentCandidateGroups, CandidatesApartInTheImageOrEmptyFormNoGroup) {
