@@ -555,8 +555,10 @@ SceneEstimator::UnionOutcome SceneEstimator::identifyPieces(
       piece.moved = outcome.moved;
       piece.probability = outcome.probability;
       piece.update = outcome.update;
-      piece.note =
-          "identified with the " + std::to_string(members.size() - 1) + " piece(s) beside it";
+      // The union's own note first where it has one (a moved instance's, which the node logs).
+      const std::string pieces =
+          "with the " + std::to_string(members.size() - 1) + " piece(s) beside it";
+      piece.note = outcome.note.empty() ? "identified " + pieces : outcome.note + ", " + pieces;
     } else {
       piece.note = "a part of " + instances_[index].name;
     }

@@ -242,6 +242,31 @@ TEST(InstancePresence, AMugMovedThirtyCentimetresKeepsItsInstance) {
   EXPECT_EQ(moved, 1);
 }
 
+// The same move with the segmentation over-splitting on purpose: at B the mug is found from its
+// pieces together, and the note that reports the piece says the mug moved, not only that pieces
+// were joined (the node logs a moved candidate's note).
+TEST(InstancePresence, AMovedMugFoundFromItsPiecesIsReportedMoved) {
+  SceneEstimatorParameters parameters;
+  parameters.segmentation.concavity_tolerance_deg = 0.5;
+  parameters.segmentation.min_part_fraction = 0.02;
+  parameters.segmentation.supervoxel_seed = 0.01;
+  SceneEstimator estimator = makeEstimator(parameters);
+  const std::string name = mugFoundAtA(estimator).name;
+  const Eigen::Vector3d between = kMugPosition + Eigen::Vector3d(0.0, 0.15, 0.0);
+  const SceneUpdate update =
+      look(estimator, tableWith({mugAt(kMugAtB)}),
+           worldFromCamera(Eigen::Vector3d(1.0, 0.1, 0.9), between, 0.8), 1.0);
+  ASSERT_EQ(estimator.instances().size(), 1u) << "the moved mug became a second instance";
+  int moved = 0;
+  for (const CandidateOutcome& candidate : update.candidates) {
+    if (!candidate.moved) continue;
+    ++moved;
+    EXPECT_NE(candidate.note.find(name + " moved here"), std::string::npos) << candidate.note;
+    EXPECT_NE(candidate.note.find("piece(s) beside it"), std::string::npos) << candidate.note;
+  }
+  EXPECT_EQ(moved, 1);
+}
+
 // Taken away, and a small box put down 4 cm from where it stood: the box's candidate lies within
 // association_distance of the mug's, but the mug's place shows free. The box is not taken for
 // the mug (nor for a part of it), and does not keep it present.
