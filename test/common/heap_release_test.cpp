@@ -51,8 +51,9 @@ TEST(HeapRelease, AZeroPeriodReleasesAfterEveryFrameAndANegativeOneIsRefused) {
   PeriodicHeapRelease every_frame(0.0);
   EXPECT_TRUE(every_frame.afterFrame(1.0));
   EXPECT_TRUE(every_frame.afterFrame(1.0));
-  EXPECT_THROW(PeriodicHeapRelease(-1.0), Error);
-  EXPECT_THROW(PeriodicHeapRelease(std::numeric_limits<double>::quiet_NaN()), Error);
+  // Braces: with parentheses a compiler may read the NaN case as a declaration.
+  EXPECT_THROW(PeriodicHeapRelease{-1.0}, Error);
+  EXPECT_THROW(PeriodicHeapRelease{std::numeric_limits<double>::quiet_NaN()}, Error);
 }
 
 }  // namespace
