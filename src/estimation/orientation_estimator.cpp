@@ -395,6 +395,11 @@ void OrientationEstimator::fuseRefinement(const RefinementResult& refinement,
                                           const Eigen::Vector3d& camera_position,
                                           ViewUpdate* result) {
   result->fitted_identity_score = bestFittedIdentityScore(refinement);
+  if (const RefinedPose* fitted = bestFittedPose(refinement)) {
+    result->fitted_pose = fitted->world_from_object;
+  } else {
+    result->fitted_pose.reset();
+  }
   if (refinement.kept.empty()) return;
   filter_.update(refinedMeasurement(refinement, parameters_.refined_fusion));
   map_cache_.reset();

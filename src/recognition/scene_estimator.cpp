@@ -93,6 +93,7 @@ void checkSceneEstimatorParameters(const SceneEstimatorParameters& p) {
   checkIdentificationParameters(p.identification);
   checkNonNegative(p.association_distance, "association_distance");
   checkUnknownRetryParameters(p.unknown_retry);
+  checkPartSearchParameters(p.part_search);
   checkNonNegative(p.min_camera_translation, "min_camera_translation");
   checkNonNegative(p.min_camera_rotation, "min_camera_rotation");
   checkNonNegative(p.part_tolerance, "part_tolerance");
@@ -141,6 +142,8 @@ SceneEstimator::SceneEstimator(ModelLibrary library, SceneEstimatorParameters pa
       parameters_.forget_gone_after);
   overlap_ = std::make_unique<InstanceOverlap>(library_);
   collision_ = std::make_unique<InstanceCollision>(library_);
+  part_search_ = std::make_unique<PartSearch>(parameters_.instance, parameters_.part_search,
+                                              parameters_.identification.threads);
 }
 
 const ObjectInstance* SceneEstimator::instance(int id) const {
@@ -237,6 +240,7 @@ SceneUpdate SceneEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
   // The rest, largest first (segmentScene's order): new instances, parts of the instances found
   // on this frame, or unknown; then what is left, in groups of pieces beside each other.
   int identifications = 0;
+  std::vector<bool> unknown_alone(candidates.size(), false);
   const std::set<std::vector<std::size_t>> clusters_tried = identifyWholeClusters(
       cloud, segments, candidates, scene, world_from_camera, time, &identifications, &result);
   for (std::size_t c = 0; c < candidates.size(); ++c) {
@@ -254,12 +258,14 @@ SceneUpdate SceneEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
       outcome.note = "not identified: max_identifications reached on this frame";
     } else {
       ++identifications;
-      identify(candidates[c], scene, world_from_camera, time, &outcome, true,
-               unassignedBesides(candidates, c));
+      unknown_alone[c] = identify(candidates[c], scene, world_from_camera, time, &outcome, true,
+                                  unassignedBesides(candidates, c)) < 0;
     }
   }
   identifyAdjacentGroups(cloud, segments, candidates, scene, world_from_camera, time,
                          clusters_tried, &identifications, &result);
+  identifyParts(cloud, segments, candidates, unknown_alone, scene, world_from_camera, time,
+                &result);
   dropUnlikelyInstances(&result);  // those that yielded to a colliding identification
   result.forgotten = presence_->forgetGone(instances_, time);
   result.total_ms = millisecondsSince(start);

@@ -335,25 +335,29 @@ ShapeAlternative::ShapeAlternative(const ModelLibrary& library, VerificationPara
   }
 }
 
-std::vector<double> ShapeAlternative::penalties(const pcl::PointCloud<pcl::PointXYZ>& points,
-                                                const Eigen::Vector3f& up,
-                                                const SceneDepth& scene) const {
-  std::vector<double> result(simple_.size(), 0.0);
-  if (up.isZero() || points.empty() ||
-      std::all_of(simple_.begin(), simple_.end(), [](bool simple) { return simple; })) {
-    return result;
-  }
+double ShapeAlternative::fraction(const pcl::PointCloud<pcl::PointXYZ>& points,
+                                  const Eigen::Vector3f& up, const SceneDepth& scene) const {
+  if (up.isZero() || points.empty()) return 0.0;
   std::vector<float> depths;
   for (const auto& p : points.points) {
     if (std::isfinite(p.z)) depths.push_back(p.z);
   }
-  if (depths.empty()) return result;
+  if (depths.empty()) return 0.0;
   std::nth_element(depths.begin(), depths.begin() + depths.size() / 2, depths.end());
   const double z = depths[depths.size() / 2];
   // Verification's tolerances at that depth: the model and the shape judged alike.
-  const double fraction = simpleShapeFraction(points, up, inlierTolerance(verification_, z), scene,
-                                              freeSpaceTolerance(verification_, z));
-  const double excess = std::max(0.0, fraction - unknown_score_);
+  return simpleShapeFraction(points, up, inlierTolerance(verification_, z), scene,
+                             freeSpaceTolerance(verification_, z));
+}
+
+std::vector<double> ShapeAlternative::penalties(const pcl::PointCloud<pcl::PointXYZ>& points,
+                                                const Eigen::Vector3f& up,
+                                                const SceneDepth& scene) const {
+  std::vector<double> result(simple_.size(), 0.0);
+  if (std::all_of(simple_.begin(), simple_.end(), [](bool simple) { return simple; })) {
+    return result;
+  }
+  const double excess = std::max(0.0, fraction(points, up, scene) - unknown_score_);
   for (std::size_t m = 0; m < simple_.size(); ++m) result[m] = simple_[m] ? 0.0 : excess;
   return result;
 }

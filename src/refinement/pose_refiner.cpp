@@ -758,14 +758,19 @@ RefinementResult PoseRefiner::refine(const BinghamMixture& belief, const Eigen::
   return result;
 }
 
-std::optional<double> bestFittedIdentityScore(const RefinementResult& refinement) {
-  std::optional<double> best;
+const RefinedPose* bestFittedPose(const RefinementResult& refinement) {
+  const RefinedPose* best = nullptr;
   for (const RefinedPose& pose : refinement.tried) {
     if (!pose.screened_in || !pose.converged || pose.score.observed == 0) continue;
-    const double score = pose.score.identityScore();
-    if (!best || score > *best) best = score;
+    if (!best || pose.score.identityScore() > best->score.identityScore()) best = &pose;
   }
   return best;
+}
+
+std::optional<double> bestFittedIdentityScore(const RefinementResult& refinement) {
+  const RefinedPose* best = bestFittedPose(refinement);
+  if (!best) return std::nullopt;
+  return best->score.identityScore();
 }
 
 }  // namespace vdc

@@ -42,6 +42,9 @@ ParameterTable<SceneRosParameters> makeTable() {
       .add("association_distance", scene(&S::association_distance), numberAbove(0.0))
       .add("max_identifications", scene(&S::max_identifications),
            integerAtLeast(0, "0: no new instances"))
+      .add("part_search_candidates",
+           fieldPath(&P::scene, &S::part_search, &PartSearchParameters::max_candidates),
+           integerAtLeast(0, "0: no part search"))
       .add("identity_min_probability", identification(&IdentificationParameters::min_probability),
            numberIn(0.0, 1.0, true))
       .add("identity_track_probability",

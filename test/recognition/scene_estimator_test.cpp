@@ -15,6 +15,7 @@
 #include "shared_surfaces.h"
 #include "support/mug_scene.h"
 #include "support/quick_mug_model.h"
+#include "support/scene_update_text.h"
 #include "view_direction_classification/common/error.h"
 #include "view_direction_classification/common/quaternion.h"
 #include "view_direction_classification/common/rotation_error.h"
@@ -71,19 +72,7 @@ const ObjectInstance* instanceAt(const SceneEstimator& estimator, const Eigen::V
 }
 
 std::string describe(const SceneEstimator& estimator, const SceneUpdate& update) {
-  std::string text = std::to_string(update.candidates.size()) + " candidates:";
-  for (const CandidateOutcome& c : update.candidates) {
-    text += "\n  at (" + std::to_string(c.centroid_world.x()) + ", " +
-            std::to_string(c.centroid_world.y()) + ") " + std::to_string(c.points) +
-            " points, instance " + std::to_string(c.instance) + " p " +
-            std::to_string(c.probability) + " " + c.note;
-  }
-  for (const ObjectInstance& instance : estimator.instances()) {
-    const auto position = instance.estimator->positionEstimate();
-    text += "\n  " + instance.name + " at (" + std::to_string(position->x()) + ", " +
-            std::to_string(position->y()) + ", " + std::to_string(position->z()) + ")";
-  }
-  return text;
+  return test::describeSceneUpdate(estimator, update);
 }
 
 const Eigen::Vector3d kFirstView(1.0, 0.2, 0.9);

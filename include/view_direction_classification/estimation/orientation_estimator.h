@@ -157,6 +157,8 @@ struct ViewUpdate {
   // instance's identity by after its first view: a belief that settled on a wrong orientation is
   // no evidence that the object is another.
   std::optional<double> fitted_identity_score;
+  // That pose (world_from_object): where the model fits this view best, accepted or not.
+  std::optional<Eigen::Isometry3d> fitted_pose;
   std::string refinement_skip_reason;
   // The belief's best pose fitted this view poorly, so a search beyond its hypotheses ran
   // (belief_check.h); rebuild_reason non-empty: the search's pose fitted the latest views clearly

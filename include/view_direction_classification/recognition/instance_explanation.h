@@ -24,6 +24,15 @@ class InstanceExplanation {
   double explainedFraction(const std::vector<Eigen::Vector3f>& points_world,
                            const Eigen::Isometry3d& world_from_object, double tolerance) const;
 
+  // Per point of `points_world`: whether it lies within `tolerance` [m] of the placed surface
+  // and, with normals_world (unit, one per point, facing the camera; a non-finite one is not
+  // judged), faces the way the nearest sample does (their cosine at least min_normal_cosine): a
+  // box's face pressed against a mug lies within millimetres of the mug's side, facing it.
+  std::vector<bool> explainedPoints(const std::vector<Eigen::Vector3f>& points_world,
+                                    const Eigen::Isometry3d& world_from_object, double tolerance,
+                                    const std::vector<Eigen::Vector3f>* normals_world = nullptr,
+                                    double min_normal_cosine = 0.5) const;
+
   // Whether the model placed at world_from_object explains `points_world` as one of its parts:
   // at least min_fraction of them within tolerance [m] of its surface.
   bool explainsPart(const std::vector<Eigen::Vector3f>& points_world,
@@ -32,6 +41,7 @@ class InstanceExplanation {
 
  private:
   std::unique_ptr<const NearestPoints> surface_;
+  std::vector<Eigen::Vector3f> normals_;  // the samples' outward normals (object frame)
 };
 
 }  // namespace vdc

@@ -20,6 +20,7 @@
 #include "view_direction_classification/recognition/instance_overlap.h"
 #include "view_direction_classification/recognition/instance_presence.h"
 #include "view_direction_classification/recognition/model_library.h"
+#include "view_direction_classification/recognition/part_search.h"
 #include "view_direction_classification/recognition/scene_memory.h"
 #include "view_direction_classification/recognition/shape_alternative.h"
 #include "view_direction_classification/recognition/unknown_objects.h"
@@ -42,6 +43,9 @@ struct SceneEstimatorParameters {
   // view instead of 92 % (67 % to 81 % with 5 models) for the same CPU over three views
   // (doc/evaluation.md), a slower first frame.
   int max_identifications = 20;
+  // A known object in part of a candidate left unknown (part_search.h), searched after every
+  // other identification of the frame; its own bound (max_candidates), not max_identifications.
+  PartSearchParameters part_search;
   // When a candidate found unknown is tried again (unknown_objects.h).
   UnknownRetryParameters unknown_retry;
   // A frame is segmented only when the camera moved at least this far [m] or turned this much
@@ -233,6 +237,29 @@ class SceneEstimator {
                               const Eigen::Isometry3d& world_from_camera,
                               std::optional<double> time, int* identifications, SceneUpdate* result,
                               CandidateOutcome* union_outcome = nullptr);
+  // After every other identification: the candidates that were identified alone and found
+  // unknown (unknown_alone), most points first, searched for a known object in part of them
+  // (PartSearch); a part identified becomes an instance that the candidate reports.
+  void identifyParts(const pcl::PointCloud<pcl::PointXYZ>& cloud, const SceneSegments& segments,
+                     std::vector<FrameCandidate>& candidates,
+                     const std::vector<bool>& unknown_alone, const SceneDepth& scene,
+                     const Eigen::Isometry3d& world_from_camera, std::optional<double> time,
+                     SceneUpdate* result);
+  // Identifies a part of candidate c (PartSearch) when it and the rest could be two objects
+  // (PartSearchParameters: min_shape_gain against `whole`, what one simple shape explains of the
+  // candidate; a rest that no simple shape explains must be identified first). Whether the part
+  // became an instance, which the candidate then reports.
+  bool identifyPart(const pcl::PointCloud<pcl::PointXYZ>& cloud, const SceneSegments& segments,
+                    std::size_t c, const CandidatePart& part, double whole,
+                    std::vector<FrameCandidate>& candidates, const SceneDepth& scene,
+                    const Eigen::Isometry3d& world_from_camera, std::optional<double> time,
+                    SceneUpdate* result);
+  // Identifies the points of candidate c marked in `subset` as a candidate of their own (not
+  // remembered when unknown): identify's result, its outcome in *outcome.
+  int identifySubset(const pcl::PointCloud<pcl::PointXYZ>& cloud, const SceneSegments& segments,
+                     std::size_t c, const std::vector<bool>& subset, const SceneDepth& scene,
+                     const Eigen::Isometry3d& world_from_camera, std::optional<double> time,
+                     CandidateOutcome* outcome);
   // remember_unknown: an unknown outcome is remembered (unknowns_) for its centroid.
   // Returns the index of the candidate's instance (a new one, or a known one that moved), or -1.
   // `others`: the frame's candidates without an instance besides this one; those the identified
@@ -271,6 +298,7 @@ class SceneEstimator {
   std::unique_ptr<InstancePresence> presence_;
   std::unique_ptr<InstanceOverlap> overlap_;
   std::unique_ptr<InstanceCollision> collision_;  // identifications of two models in one space
+  std::unique_ptr<PartSearch> part_search_;
   // Per library model: an estimator that fuses nothing and holds its model's surfaces alive.
   std::vector<std::unique_ptr<const OrientationEstimator>> surface_holders_;
   std::vector<ObjectInstance> instances_;

@@ -54,6 +54,10 @@ class ShapeAlternative {
   std::vector<double> penalties(const pcl::PointCloud<pcl::PointXYZ>& points,
                                 const Eigen::Vector3f& up,
                                 const SceneDepth& scene = SceneDepth()) const;
+  // The alternative itself: simpleShapeFraction at verification's tolerances at the points'
+  // median depth (0 without a support or points).
+  double fraction(const pcl::PointCloud<pcl::PointXYZ>& points, const Eigen::Vector3f& up,
+                  const SceneDepth& scene = SceneDepth()) const;
 
  private:
   std::vector<bool> simple_;  // per model: isSimpleShape

@@ -203,6 +203,8 @@ struct RefinementResult {
 // refused for leaving the belief's credible region may explain it well). Nothing when no pose
 // was aligned.
 std::optional<double> bestFittedIdentityScore(const RefinementResult& refinement);
+// That pose (null when no pose was aligned): where the model fits best, whatever the belief says.
+const RefinedPose* bestFittedPose(const RefinementResult& refinement);
 
 // The view's points voxel-filtered to `voxel` [m] (PCL's VoxelGrid, one centroid per occupied
 // cell), the same camera pose: what refinement scores and aligns (a 640 x 480 view of the mug
