@@ -222,6 +222,8 @@ std::vector<CandidatePart> PartSearch::find(const ModelLibrary& library,
   if (points.size() < 2 * min_points) return {};
   const std::vector<CropFit> best =
       fittedCrops(library, points, sides, scene, world_from_camera, time);
+  // Most searched candidates end here (nothing fitted well enough): no normals needed then.
+  if (best.empty() || *best.front().score < parameters_.min_fitted_score) return {};
   const std::vector<Eigen::Vector3f> normals_world = worldNormals(points, world_from_camera);
   const CandidatePoints candidate{&points, &points_world, &normals_world};
   std::vector<CandidatePart> parts;
