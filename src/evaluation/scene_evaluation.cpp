@@ -19,6 +19,7 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 void countCandidates(const SceneUpdate& update, SceneViewRecord* record) {
   record->segmented = update.segmented;
   record->segmentation_ms = update.segmentation_ms;
+  record->stage_ms = update.stage_ms;
   record->candidates = static_cast<int>(update.candidates.size());
   for (const CandidateOutcome& candidate : update.candidates) {
     if (candidate.new_instance) ++record->new_instances;

@@ -223,6 +223,8 @@ SceneUpdate SceneEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
 
   std::vector<FrameCandidate> candidates =
       frameCandidates(cloud, segments, world_from_camera, &result);
+  Clock::time_point stage_start = Clock::now();
+  result.stage_ms.preparation = millisecondsSince(start);
   const Eigen::Isometry3d camera_from_world = world_from_camera.inverse();
   unknowns_.forgetIf([&](const Eigen::Vector3d& centroid) {
     return placeEmptied(centroid, result.candidates, scene, camera_from_world,
@@ -235,6 +237,8 @@ SceneUpdate SceneEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
     if (candidate.instance >= 0) associated.push_back(instances_[candidate.instance].id);
   }
   updateAssignedInstances(candidates, scene, world_from_camera, time, &result);
+  result.stage_ms.instances = millisecondsSince(stage_start);
+  stage_start = Clock::now();
   // Before identification, which takes an instance whose place was seen free for a moved one.
   result.gone = presence_->observe(instances_, associated, scene, world_from_camera, time);
   // The rest, largest first (segmentScene's order): new instances, parts of the instances found
@@ -262,10 +266,15 @@ SceneUpdate SceneEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
                                   unassignedBesides(candidates, c)) < 0;
     }
   }
+  result.stage_ms.identification = millisecondsSince(stage_start);
+  stage_start = Clock::now();
   identifyAdjacentGroups(cloud, segments, candidates, scene, world_from_camera, time,
                          clusters_tried, &identifications, &result);
+  result.stage_ms.groups = millisecondsSince(stage_start);
+  stage_start = Clock::now();
   identifyParts(cloud, segments, candidates, unknown_alone, scene, world_from_camera, time,
                 &result);
+  result.stage_ms.parts = millisecondsSince(stage_start);
   dropUnlikelyInstances(&result);  // those that yielded to a colliding identification
   result.forgotten = presence_->forgetGone(instances_, time);
   result.total_ms = millisecondsSince(start);

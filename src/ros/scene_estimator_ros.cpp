@@ -302,6 +302,7 @@ void SceneEstimatorRos::processCloud(const sensor_msgs::PointCloud2& cloud) {
   }
   last_segmentation_ms_ = update.segmentation_ms;
   last_total_ms_ = update.total_ms;
+  if (update.segmented) last_stage_ms_ = update.stage_ms;
   last_segmentation_note_ = update.segmentation_note;
   publishInstances(cloud.header);
 }
@@ -567,6 +568,11 @@ void SceneEstimatorRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& st
              last_segmentation_note_.empty() ? "none" : last_segmentation_note_);
   status.add("last segmentation [ms]", last_segmentation_ms_);
   status.add("last frame [ms]", last_total_ms_);
+  status.add("last segmented frame: preparation [ms]", last_stage_ms_.preparation);
+  status.add("last segmented frame: instances' updates [ms]", last_stage_ms_.instances);
+  status.add("last segmented frame: identification [ms]", last_stage_ms_.identification);
+  status.add("last segmented frame: groups of pieces [ms]", last_stage_ms_.groups);
+  status.add("last segmented frame: part search [ms]", last_stage_ms_.parts);
   addHeapUsage(status, heap_release_);
 }
 

@@ -135,6 +135,7 @@ class SceneEstimatorRos {
   std::string last_skip_reason_;
   std::string last_segmentation_note_;  // clusters dropped, no support found
   double last_segmentation_ms_ = 0, last_total_ms_ = 0;
+  SceneStageTimes last_stage_ms_;  // of the last segmented frame
 };
 
 }  // namespace vdc

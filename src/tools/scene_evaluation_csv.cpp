@@ -90,6 +90,14 @@ const std::vector<Column>& columns() {
            return std::string(falseIdentificationKindName(k));
          });
        }},
+      // The stages of time_ms after segmentation (SceneStageTimes), last so that older column
+      // positions hold.
+      {"preparation_ms", [](const auto& r) { return number(r.stage_ms.preparation, "%.1f"); }},
+      {"instances_ms", [](const auto& r) { return number(r.stage_ms.instances, "%.1f"); }},
+      {"identification_ms",
+       [](const auto& r) { return number(r.stage_ms.identification, "%.1f"); }},
+      {"groups_ms", [](const auto& r) { return number(r.stage_ms.groups, "%.1f"); }},
+      {"parts_ms", [](const auto& r) { return number(r.stage_ms.parts, "%.1f"); }},
   };
   return kColumns;
 }

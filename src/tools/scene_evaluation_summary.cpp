@@ -42,6 +42,30 @@ void countFalseKinds(const SceneViewRecord& record, SceneViewSummary* summary) {
   }
 }
 
+void addStageTimes(const SceneViewRecord& record, SceneViewSummary* summary) {
+  if (!record.segmented) return;
+  ++summary->segmented;
+  summary->mean_segmentation_ms += record.segmentation_ms;
+  SceneStageTimes& sum = summary->mean_stage_ms;
+  sum.preparation += record.stage_ms.preparation;
+  sum.instances += record.stage_ms.instances;
+  sum.identification += record.stage_ms.identification;
+  sum.groups += record.stage_ms.groups;
+  sum.parts += record.stage_ms.parts;
+}
+
+void divideStageTimes(SceneViewSummary* summary) {
+  if (summary->segmented == 0) return;
+  const double n = summary->segmented;
+  summary->mean_segmentation_ms /= n;
+  SceneStageTimes& mean = summary->mean_stage_ms;
+  mean.preparation /= n;
+  mean.instances /= n;
+  mean.identification /= n;
+  mean.groups /= n;
+  mean.parts /= n;
+}
+
 SceneViewSummary summariseView(int view, const std::vector<SceneViewRecord>& records) {
   SceneViewSummary summary;
   summary.view = view;
@@ -56,6 +80,7 @@ SceneViewSummary summariseView(int view, const std::vector<SceneViewRecord>& rec
     summary.estimates += static_cast<int>(record.estimates.size());
     countFalseKinds(record, &summary);
     times.push_back(record.time_ms);
+    addStageTimes(record, &summary);
     for (const IdentifiedInstance& instance : record.metrics.identified) {
       rotations.push_back(instance.rotation_error_deg);
       positions.push_back(instance.position_error * 1000.0);
@@ -67,6 +92,7 @@ SceneViewSummary summariseView(int view, const std::vector<SceneViewRecord>& rec
   summary.inside_cone90 = fraction(inside, summary.identified);
   summary.mean_time_ms = mean(times);
   summary.median_time_ms = median(times);
+  divideStageTimes(&summary);
   return summary;
 }
 
@@ -123,6 +149,15 @@ void printSceneEvaluationSummary(const std::vector<SceneViewRecord>& records) {
         s.falsePerView(), 100.0 * s.falseFractionOfEstimates(), s.false_on_distractor,
         s.false_wrong_model, s.false_duplicate, s.false_elsewhere, s.median_rotation_deg,
         s.median_position_mm, 100.0 * s.inside_cone90, s.mean_time_ms, s.median_time_ms);
+  }
+  std::printf(
+      "time per segmented view by stage, mean [ms]: view  segmented  segmentation  preparation  "
+      "instances  identification  groups  parts\n");
+  for (const SceneViewSummary& s : summariseByView(records)) {
+    const SceneStageTimes& stage = s.mean_stage_ms;
+    std::printf("%49d  %9d  %12.0f  %11.0f  %9.0f  %14.0f  %6.0f  %5.0f\n", s.view, s.segmented,
+                s.mean_segmentation_ms, stage.preparation, stage.instances, stage.identification,
+                stage.groups, stage.parts);
   }
   const int models = records.empty() ? 0 : records.front().models;
   std::printf("time per segmented view against candidates (%d models):\n", models);

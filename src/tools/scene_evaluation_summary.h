@@ -15,6 +15,10 @@ struct SceneViewSummary {
   double median_rotation_deg = 0.0, median_position_mm = 0.0;  // over identified instances
   double inside_cone90 = 0.0;                                  // fraction of identified
   double mean_time_ms = 0.0, median_time_ms = 0.0;
+  // Means over the segmented views only (a frame not segmented has no stages).
+  int segmented = 0;
+  double mean_segmentation_ms = 0.0;
+  SceneStageTimes mean_stage_ms;
   double identifiedFraction() const;        // of visible known
   double falsePerView() const;              // false identifications per view
   double falseFractionOfEstimates() const;  // of every confirmed estimate

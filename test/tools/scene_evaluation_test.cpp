@@ -78,7 +78,8 @@ TEST(SceneEvaluation, ScenesCsvHasAHeaderAndOneRowPerSceneAndViewOfEqualWidth) {
   for (const char* column :
        {"scene", "view", "visible_known", "identified", "false_identifications", "candidates",
         "models", "time_ms", "segmentation_ms", "rotation_error_deg", "position_error_mm",
-        "inside_cone90", "missed_models", "false_kinds"}) {
+        "inside_cone90", "missed_models", "false_kinds", "instances_ms", "identification_ms",
+        "parts_ms"}) {
     EXPECT_NE(std::find(header.begin(), header.end(), column), header.end()) << column;
   }
   for (std::size_t row = 1; row < lines.size(); ++row) {
@@ -108,6 +109,26 @@ TEST(SceneEvaluation, IdentifiesTheVisibleMugsAfterEachViewAndClaimsOnlyBoxesWro
     EXPECT_GE(record.candidates, record.metrics.visible_known);
     EXPECT_EQ(record.models, 1);
   }
+}
+
+// The first view identifies the mugs, the second updates their instances: each view's time
+// shows in the stage that did the work, and the stages never add up to more than the view.
+TEST(SceneEvaluation, EachViewsTimeIsSplitIntoTheStagesThatRan) {
+  const std::vector<SceneViewRecord>& records = mugsAndBoxesRecords();
+  ASSERT_EQ(records.size(), 2u);
+  EXPECT_GT(records[0].stage_ms.identification, 0.0);
+  EXPECT_GT(records[1].stage_ms.instances, 0.0);
+  for (const SceneViewRecord& record : records) {
+    const SceneStageTimes& stage = record.stage_ms;
+    const double sum = record.segmentation_ms + stage.preparation + stage.instances +
+                       stage.identification + stage.groups + stage.parts;
+    EXPECT_LE(sum, record.time_ms + 1e-6);
+    EXPECT_GT(sum, 0.5 * record.time_ms);
+  }
+  const std::vector<SceneViewSummary> summaries = summariseByView(records);
+  ASSERT_EQ(summaries.size(), 2u);
+  EXPECT_EQ(summaries[0].segmented, 1);
+  EXPECT_DOUBLE_EQ(summaries[0].mean_stage_ms.identification, records[0].stage_ms.identification);
 }
 
 TEST(SceneEvaluation, TheSummaryCountsEachViewIndexOverTheScenes) {

@@ -68,6 +68,7 @@ struct SceneViewRecord {
   bool segmented = false;
   double time_ms = 0.0;  // SceneEstimator::update, wall clock
   double segmentation_ms = 0.0;
+  SceneStageTimes stage_ms;  // the rest of a segmented view's time, stage by stage
 };
 
 // Called after each view: views done and the total.

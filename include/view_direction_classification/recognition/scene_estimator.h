@@ -105,6 +105,16 @@ struct CandidateOutcome {
   ViewUpdate update;         // its instance's estimator update (when it has one)
 };
 
+// Where a segmented frame's time went [ms], stage by stage, in the order they run (the
+// frame's total_ms is their sum and the little between them).
+struct SceneStageTimes {
+  double preparation = 0;     // the verification's ray index and the frame's candidates
+  double instances = 0;       // association and the associated instances' updates
+  double identification = 0;  // whole clusters and single candidates against the library
+  double groups = 0;          // groups of pieces beside each other
+  double parts = 0;           // the part search (part_search_candidates)
+};
+
 struct SceneUpdate {
   bool segmented = false;
   std::string skip_reason;  // why the frame was not segmented
@@ -116,6 +126,7 @@ struct SceneUpdate {
   // Instances marked gone on this frame, and gone ones forgotten (forget_gone_after): their ids.
   std::vector<int> gone, forgotten;
   double segmentation_ms = 0, total_ms = 0;
+  SceneStageTimes stage_ms;  // segmented frames only
 };
 
 // The scene layer (doc/method.md section 13): every frame's candidates are found, each is
