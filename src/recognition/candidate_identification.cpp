@@ -93,6 +93,19 @@ std::vector<int> allowedFitting(const ModelLibrary& library, const Eigen::Vector
   return fitting;
 }
 
+// Whether the simple shape behind model m's penalty (ShapeAlternative: unknown_score + the
+// penalty is what the shape explains) explains the candidate at the search's threshold. Such a
+// candidate is a box or a can as surely as a model's own pose must explain one to make the
+// searches needless; searching for the model's pose anyway cost a box 2-3 times its
+// identification and found nothing that could beat the shape (doc/evaluation.md). Models that
+// are simple shapes themselves have no penalty, and search as before.
+bool explainedByShape(const std::vector<double>& score_penalties, int m,
+                      const IdentificationParameters& parameters, double search_below) {
+  if (score_penalties.empty()) return false;
+  const double penalty = score_penalties[static_cast<std::size_t>(m)];
+  return penalty > 0.0 && parameters.unknown_score + penalty >= search_below;
+}
+
 // A candidate's features, computed once per feature setting among the models it is tried
 // against (models trained with the defaults share them).
 class SharedFeatures {
@@ -148,16 +161,22 @@ Identification identifyCandidate(
     updates[m] = estimators[m]->update(points, world_from_camera, time,
                                        {scene, BeliefSearch::kDeferred, model_features[m]});
   });
+  const double search_below = instance_parameters.belief_check.search_below_score;
   const bool explained_at_once = std::any_of(fitting.begin(), fitting.end(), [&](int m) {
     return !updates[m].search_pending && updates[m].verified_score &&
-           *updates[m].verified_score >= instance_parameters.belief_check.search_below_score;
+           *updates[m].verified_score >= search_below;
   });
   if (!explained_at_once) {
-    parallelFor(fitting.size(), parameters.threads, [&](int, std::size_t k) {
-      const int m = fitting[k];
-      if (updates[m].search_pending) {
-        updates[m] = estimators[m]->completeSearch(std::move(updates[m]));
+    std::vector<int> searching;
+    for (int m : fitting) {
+      if (updates[m].search_pending &&
+          !explainedByShape(score_penalties, m, parameters, search_below)) {
+        searching.push_back(m);
       }
+    }
+    parallelFor(searching.size(), parameters.threads, [&](int, std::size_t k) {
+      const int m = searching[k];
+      updates[m] = estimators[m]->completeSearch(std::move(updates[m]));
     });
   }
   result.searched.assign(library.size(), false);

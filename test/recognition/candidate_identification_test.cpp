@@ -11,6 +11,7 @@
 #include "view_direction_classification/common/error.h"
 #include "view_direction_classification/geometry/depth_renderer.h"
 #include "view_direction_classification/geometry/primitive_meshes.h"
+#include "view_direction_classification/recognition/shape_alternative.h"
 
 namespace vdc {
 namespace {
@@ -148,15 +149,24 @@ std::pair<pcl::PointCloud<pcl::PointXYZ>, Eigen::Isometry3d> viewOf(const Triang
           camera_from_world.inverse()};
 }
 
-Identification identifyAlone(const TriangleMesh& mesh, int threads = 2) {
-  const ModelLibrary library({{"mug", test::quickMugModel()}, {"flipped", upsideDownMug()}});
+ModelLibrary mugAndFlipped() {
+  return ModelLibrary({{"mug", test::quickMugModel()}, {"flipped", upsideDownMug()}});
+}
+
+EstimatorParameters instanceParameters() {
   EstimatorParameters instance;
   instance.segmentation.mode = SegmentationMode::kNone;
+  return instance;
+}
+
+Identification identifyAlone(const TriangleMesh& mesh, int threads = 2,
+                             const std::vector<double>& penalties = {}) {
   const auto [points, world_from_camera] = viewOf(mesh);
   IdentificationParameters parameters;
   parameters.threads = threads;
-  return identifyCandidate(library, instance, points, Eigen::Vector3d(0.11, 0.09, 0.08), {},
-                           world_from_camera, 0.0, parameters);
+  return identifyCandidate(mugAndFlipped(), instanceParameters(), points,
+                           Eigen::Vector3d(0.11, 0.09, 0.08), {}, world_from_camera, 0.0,
+                           parameters, penalties);
 }
 
 TEST(IdentifyCandidate, AModelThatExplainsTheCandidateAtOnceSparesTheOthersTheirSearch) {
@@ -195,6 +205,34 @@ TEST(IdentifyCandidate, WhenNoModelExplainsTheCandidateAtOnceEveryModelSearches)
   ASSERT_EQ(box.searched.size(), 2u);
   EXPECT_TRUE(box.searched[0]);
   EXPECT_TRUE(box.searched[1]);
+}
+
+// The same box with the shape alternative's penalties: a box explains the rendered box at the
+// search's threshold (unknown_score + penalty >= search_below_score), so it is a box as surely as
+// a model's own pose must explain a candidate to spare the searches, and no model searches. Just
+// below the threshold every model does, as without penalties.
+TEST(IdentifyCandidate, ACandidateABoxExplainsAtTheSearchsThresholdIsNotSearched) {
+  const TriangleMesh box = makeBoxMesh(Eigen::Vector3d(0.09, 0.08, 0.10));
+  const auto [points, world_from_camera] = viewOf(box);
+  const IdentificationParameters parameters;
+  const ShapeAlternative shapes(mugAndFlipped(),
+                                instanceParameters().refinement_parameters.verification,
+                                parameters.unknown_score);
+  const Eigen::Vector3f up =
+      (world_from_camera.rotation().transpose() * Eigen::Vector3d::UnitZ()).cast<float>();
+  const std::vector<double> penalties = shapes.penalties(points, up);
+  ASSERT_EQ(penalties.size(), 2u);
+  const double search_below = instanceParameters().belief_check.search_below_score;
+  ASSERT_GE(parameters.unknown_score + penalties[0], search_below);
+  const Identification explained = identifyAlone(box, 2, penalties);
+  EXPECT_EQ(explained.model, -1);
+  ASSERT_EQ(explained.searched.size(), 2u);
+  EXPECT_FALSE(explained.searched[0]);
+  EXPECT_FALSE(explained.searched[1]);
+  const double just_below = search_below - parameters.unknown_score - 0.01;
+  const Identification unsure = identifyAlone(box, 2, {just_below, just_below});
+  EXPECT_TRUE(unsure.searched[0]);
+  EXPECT_TRUE(unsure.searched[1]);
 }
 
 // The models run side by side, each with its own estimator: the same scores, to the last bit, as

@@ -87,7 +87,9 @@ struct Identification {
 // The models' searches beyond their beliefs (belief_check.h) run only when no model's own
 // belief gave a pose verifying at the search's threshold (search_below_score): on known objects
 // the others' searches never beat a model that explains the candidate at once
-// (doc/evaluation.md), and they are most of the cost.
+// (doc/evaluation.md), and they are most of the cost. Nor does a model search where its penalty
+// says a simple shape explains the candidate at that threshold (unknown_score + penalty >=
+// search_below_score): a box or a can, as surely as a model's pose must explain a candidate.
 Identification identifyCandidate(
     const ModelLibrary& library, const EstimatorParameters& instance_parameters,
     const pcl::PointCloud<pcl::PointXYZ>& points, const Eigen::Vector3d& candidate_sides,
