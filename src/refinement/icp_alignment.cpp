@@ -42,6 +42,15 @@ class FiniteStepPointToPlane
                                    const pcl::PointCloud<pcl::PointNormal>& target,
                                    const pcl::Correspondences& correspondences,
                                    Matrix4& transform) const override {
+    // PCL's ICP would stop before this step and print an error for every such alignment (to
+    // stderr, unthrottled: a node's terminal filled with it); it is told to ask for every step
+    // (CountingIcp), and the check is here, where a start without pairs is the usual case of a
+    // search, not an error.
+    if (correspondences.size() < kMinPairs) {
+      transform.setIdentity();
+      too_few_pairs = true;
+      return;
+    }
     std::vector<float> scales(correspondences.size(), 1.0f);
     if (!row_scales_.empty()) {
       for (std::size_t i = 0; i < correspondences.size(); ++i) {
@@ -58,7 +67,10 @@ class FiniteStepPointToPlane
     }
   }
 
+  // The fewest pairs PCL's ICP takes a step from (its min_number_correspondences_ default).
+  static constexpr std::size_t kMinPairs = 3;
   mutable bool degenerate = false;
+  mutable bool too_few_pairs = false;  // fewer than kMinPairs: no step
 
  private:
   std::vector<float> row_scales_;  // per observed point: the square root of its weight
@@ -107,10 +119,12 @@ class BatchedCorrespondences
   std::shared_ptr<const ModelSurface> surface_;
 };
 
-// PCL's ICP, telling how many iterations its last alignment took.
+// PCL's ICP, telling how many iterations its last alignment took, and taking every step to
+// FiniteStepPointToPlane, which judges whether there are pairs enough for one.
 class CountingIcp
     : public pcl::IterativeClosestPointWithNormals<pcl::PointNormal, pcl::PointNormal> {
  public:
+  CountingIcp() { min_number_correspondences_ = 0; }
   int iterations() const { return nr_iterations_; }
 };
 
@@ -227,16 +241,19 @@ IcpOutcome IcpAlignment::alignOnce(const Eigen::Isometry3d& start_object_from_wo
   icp.setMaximumIterations(max_iterations);
   pcl::PointCloud<pcl::PointNormal> aligned;
   registration_->step->degenerate = false;
+  registration_->step->too_few_pairs = false;
   icp.align(aligned, start_object_from_world.matrix().cast<float>());
   IcpOutcome outcome;
   outcome.iterations = icp.iterations();
   const Eigen::Matrix4d transform = icp.getFinalTransformation().cast<double>();
   outcome.degenerate = registration_->step->degenerate || !transform.allFinite();
   if (outcome.degenerate) return outcome;
-  outcome.converged = icp.hasConverged();
+  // The no-step a lack of pairs gave ends PCL's loop as converged: it is not.
   outcome.too_few_pairs =
-      icp.getConvergeCriteria()->getConvergenceState() ==
-      pcl::registration::DefaultConvergenceCriteria<float>::CONVERGENCE_CRITERIA_NO_CORRESPONDENCES;
+      registration_->step->too_few_pairs || icp.getConvergeCriteria()->getConvergenceState() ==
+                                                pcl::registration::DefaultConvergenceCriteria<
+                                                    float>::CONVERGENCE_CRITERIA_NO_CORRESPONDENCES;
+  outcome.converged = icp.hasConverged() && !outcome.too_few_pairs;
   // Re-orthonormalise: ICP composes its steps in single precision.
   const Eigen::Quaterniond rotation(Eigen::Matrix3d(transform.topLeftCorner<3, 3>()));
   outcome.object_from_world.linear() = rotation.normalized().toRotationMatrix();

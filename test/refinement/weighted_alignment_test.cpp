@@ -134,6 +134,30 @@ TEST_F(WeightedIcpTest, APointsWeightCountsAsThatManyCopiesOfIt) {
   EXPECT_GT(gap(weighted, plain), 1e-5);
 }
 
+// A start 30 cm from the points (a search's far start): no pairs within the correspondence
+// distance, so ICP stops at once, not converged, where it started, and says so only in its
+// outcome: PCL's own error line on stderr (unthrottled, once per such start) is not printed.
+TEST_F(WeightedIcpTest, AStartWithoutPairsStopsThereQuietly) {
+  IcpSettings settings;
+  settings.max_correspondence_distance = 0.01;
+  const Eigen::Isometry3d start =
+      (Eigen::Translation3d(0.3, 0.0, 0.0) * world_from_object_).inverse();
+  testing::internal::CaptureStderr();
+  const IcpOutcome outcome = IcpAlignment(surface_, observed_, settings, {}).align(start);
+  const std::string printed = testing::internal::GetCapturedStderr();
+  EXPECT_TRUE(outcome.too_few_pairs);
+  EXPECT_FALSE(outcome.converged);
+  EXPECT_TRUE(outcome.ended());
+  EXPECT_TRUE(outcome.object_from_world.isApprox(start, 1e-5));  // ICP composes in floats
+  EXPECT_EQ(printed.find("correspondences"), std::string::npos) << printed;
+  // From near the truth the same points align.
+  const IcpOutcome near =
+      IcpAlignment(surface_, observed_, settings, {})
+          .align((Eigen::Translation3d(0.002, 0.0, 0.0) * world_from_object_).inverse());
+  EXPECT_TRUE(near.converged);
+  EXPECT_FALSE(near.too_few_pairs);
+}
+
 TEST_F(WeightedIcpTest, RefusesWeightsThatAreNotOnePerPoint) {
   std::vector<float> too_few(weights_.begin(), weights_.end() - 1);
   EXPECT_THROW(IcpAlignment(surface_, observed_, IcpSettings{}, too_few), Error);
