@@ -1,4 +1,5 @@
 #include "view_direction_classification/evaluation/baseline_icp.h"
+#include "view_direction_classification/common/elapsed_time.h"
 
 #include <pcl/registration/icp.h>
 #include <pcl/registration/transformation_estimation_point_to_plane_lls.h>
@@ -13,11 +14,6 @@
 
 namespace vdc {
 namespace {
-
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-      .count();
-}
 
 void checkParameters(const BaselineIcpParameters& p) {
   if (!(p.model_spacing > 0.0) || !std::isfinite(p.model_spacing)) {

@@ -1,4 +1,5 @@
 #include "view_direction_classification/evaluation/evaluation.h"
+#include "view_direction_classification/common/elapsed_time.h"
 
 #include <omp.h>
 
@@ -29,11 +30,6 @@ constexpr std::uint32_t kSequenceStream = 0x5e9u;
 constexpr std::uint32_t kNoiseStream = 0x9015eu;
 // Spacing of the surface set the visible fractions are measured on (doc/method.md section 1).
 constexpr double kFractionSpacing = 0.002;
-
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-      .count();
-}
 
 std::vector<double> visibleFractions(const TriangleMesh& mesh,
                                      const std::vector<Eigen::Vector3d>& anchors,

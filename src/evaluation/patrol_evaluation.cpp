@@ -1,4 +1,5 @@
 #include "view_direction_classification/evaluation/patrol_evaluation.h"
+#include "view_direction_classification/common/elapsed_time.h"
 
 #include <algorithm>
 #include <chrono>
@@ -21,11 +22,6 @@ constexpr std::uint32_t kChangeSeedOffset = 0x9e3779b9u;
 // [m] How far above the arc's last pose the camera looks away: far enough that the estimator
 // takes the frame as a new one (min_camera_translation).
 constexpr double kLookAwayLift = 1.0;
-
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-      .count();
-}
 
 PatrolChangeSource randomChanges(const std::vector<SceneEvaluationModel>& models,
                                  const PatrolSettings& settings) {

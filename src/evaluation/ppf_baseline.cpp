@@ -1,4 +1,5 @@
 #include "view_direction_classification/evaluation/ppf_baseline.h"
+#include "view_direction_classification/common/elapsed_time.h"
 
 #include <pcl/features/normal_3d.h>
 #include <pcl/features/ppf.h>
@@ -134,8 +135,7 @@ double PpfBaseline::angleStepDeg() const { return angle_step_rad_ / kDegrees; }
 PpfMatch PpfBaseline::match(const pcl::PointCloud<pcl::PointXYZ>& camera_cloud) {
   const auto start = std::chrono::steady_clock::now();
   PpfMatch result = matchScene(sceneWithNormals(camera_cloud));
-  result.milliseconds =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  result.milliseconds = millisecondsSince(start);
   return result;
 }
 
@@ -165,8 +165,7 @@ PpfMatch PpfBaseline::matchScene(const pcl::PointCloud<pcl::PointNormal>::ConstP
       result.camera_from_object.translation() = pose.topRightCorner<3, 1>();
     }
   }
-  result.milliseconds =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  result.milliseconds = millisecondsSince(start);
   return result;
 }
 

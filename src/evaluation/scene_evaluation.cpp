@@ -1,4 +1,5 @@
 #include "view_direction_classification/evaluation/scene_evaluation.h"
+#include "view_direction_classification/common/elapsed_time.h"
 
 #include <chrono>
 #include <cmath>
@@ -10,11 +11,6 @@
 
 namespace vdc {
 namespace {
-
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-      .count();
-}
 
 void countCandidates(const SceneUpdate& update, SceneViewRecord* record) {
   record->segmented = update.segmented;

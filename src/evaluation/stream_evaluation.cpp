@@ -1,4 +1,5 @@
 #include "view_direction_classification/evaluation/stream_evaluation.h"
+#include "view_direction_classification/common/elapsed_time.h"
 
 #include <omp.h>
 
@@ -26,10 +27,6 @@ constexpr std::uint32_t kStreamPathTag = 0x5a7bu;
 constexpr std::uint32_t kStreamNoiseTag = 0x5a7cu;
 
 using Clock = std::chrono::steady_clock;
-
-double millisecondsSince(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 std::mt19937 generatorOf(std::uint32_t seed, std::uint32_t tag, int sequence) {
   std::seed_seq seeds{seed, tag, static_cast<std::uint32_t>(sequence)};

@@ -1,4 +1,5 @@
 #include "view_direction_classification/recognition/scene_estimator.h"
+#include "view_direction_classification/common/elapsed_time.h"
 
 #include <algorithm>
 #include <chrono>
@@ -46,10 +47,6 @@ bool placeEmptied(const Eigen::Vector3d& centroid, const std::vector<CandidateOu
     if ((candidate.centroid_world - centroid).norm() < association_distance) return false;
   }
   return seenThrough(scene, (camera_from_world * centroid).cast<float>(), kEmptyPlaceDepth);
-}
-
-double millisecondsSince(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
 void checkNonNegative(double value, const char* name) {

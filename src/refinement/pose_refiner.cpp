@@ -1,4 +1,5 @@
 #include "view_direction_classification/refinement/pose_refiner.h"
+#include "view_direction_classification/common/elapsed_time.h"
 
 #include <pcl/common/centroid.h>
 #include <pcl/filters/voxel_grid.h>
@@ -752,9 +753,7 @@ RefinementResult PoseRefiner::refine(const BinghamMixture& belief, const Eigen::
     pose.position_covariance = covariance.translation;
     pose.rotation_covariance = covariance.rotation;
   }
-  result.milliseconds =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_time)
-          .count();
+  result.milliseconds = millisecondsSince(start_time);
   return result;
 }
 

@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "heap_diagnostics.h"
+#include "view_direction_classification/common/elapsed_time.h"
 #include "view_direction_classification/common/error.h"
 #include "view_direction_classification/ros/belief_markers.h"
 #include "view_direction_classification/ros/bingham_conversions.h"
@@ -26,10 +27,6 @@ namespace vdc {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double millisecondsSince(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 // The seed of the belief samples drawn as markers: the same belief always looks the same.
 constexpr std::uint64_t kMarkerSeed = 1;

@@ -16,6 +16,7 @@
 
 #include "heap_diagnostics.h"
 #include "instance_query.h"
+#include "view_direction_classification/common/elapsed_time.h"
 #include "view_direction_classification/common/error.h"
 #include "view_direction_classification/recognition/scene_memory_file.h"
 #include "view_direction_classification/ros/belief_markers.h"
@@ -214,8 +215,7 @@ SceneUpdate SceneEstimatorRos::updateEstimator(const pcl::PointCloud<pcl::PointX
   if (estimator_->willSegment(world_from_camera)) {
     segments = segmentLabels(cloud, *labels, scene_parameters_.scene.segmentation);
   }
-  const double segmentation_ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const double segmentation_ms = millisecondsSince(start);
   SceneUpdate update = estimator_->update(cloud, segments, world_from_camera, time);
   update.segmentation_ms = segmentation_ms;
   update.total_ms += segmentation_ms;
