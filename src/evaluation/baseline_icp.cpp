@@ -1,5 +1,4 @@
 #include "view_direction_classification/evaluation/baseline_icp.h"
-#include "view_direction_classification/common/elapsed_time.h"
 
 #include <pcl/registration/icp.h>
 #include <pcl/registration/transformation_estimation_point_to_plane_lls.h>
@@ -10,6 +9,7 @@
 #include <memory>
 #include <string>
 
+#include "view_direction_classification/common/elapsed_time.h"
 #include "view_direction_classification/common/error.h"
 
 namespace vdc {

@@ -1,5 +1,4 @@
 #include "view_direction_classification/evaluation/evaluation.h"
-#include "view_direction_classification/common/elapsed_time.h"
 
 #include <omp.h>
 
@@ -14,6 +13,7 @@
 #include <random>
 #include <string>
 
+#include "view_direction_classification/common/elapsed_time.h"
 #include "view_direction_classification/common/error.h"
 #include "view_direction_classification/common/quaternion.h"
 #include "view_direction_classification/common/rotation_error.h"

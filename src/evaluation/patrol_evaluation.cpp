@@ -1,5 +1,4 @@
 #include "view_direction_classification/evaluation/patrol_evaluation.h"
-#include "view_direction_classification/common/elapsed_time.h"
 
 #include <algorithm>
 #include <chrono>
@@ -9,6 +8,7 @@
 #include <random>
 #include <utility>
 
+#include "view_direction_classification/common/elapsed_time.h"
 #include "view_direction_classification/common/error.h"
 #include "view_direction_classification/evaluation/patrol_truth.h"
 #include "view_direction_classification/training/model_training.h"

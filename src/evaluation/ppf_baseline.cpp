@@ -1,5 +1,4 @@
 #include "view_direction_classification/evaluation/ppf_baseline.h"
-#include "view_direction_classification/common/elapsed_time.h"
 
 #include <pcl/features/normal_3d.h>
 #include <pcl/features/ppf.h>
@@ -11,6 +10,7 @@
 #include <cmath>
 #include <string>
 
+#include "view_direction_classification/common/elapsed_time.h"
 #include "view_direction_classification/common/error.h"
 #include "view_direction_classification/evaluation/ppf_angle_step.h"
 #include "view_direction_classification/geometry/surface_sampling.h"

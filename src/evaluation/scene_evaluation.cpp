@@ -1,11 +1,11 @@
 #include "view_direction_classification/evaluation/scene_evaluation.h"
-#include "view_direction_classification/common/elapsed_time.h"
 
 #include <chrono>
 #include <cmath>
 #include <random>
 #include <utility>
 
+#include "view_direction_classification/common/elapsed_time.h"
 #include "view_direction_classification/common/error.h"
 #include "view_direction_classification/training/model_training.h"
 

@@ -1,5 +1,4 @@
 #include "view_direction_classification/evaluation/stream_evaluation.h"
-#include "view_direction_classification/common/elapsed_time.h"
 
 #include <omp.h>
 
@@ -12,6 +11,7 @@
 #include <random>
 #include <string>
 
+#include "view_direction_classification/common/elapsed_time.h"
 #include "view_direction_classification/common/error.h"
 #include "view_direction_classification/common/rotation_error.h"
 #include "view_direction_classification/estimation/orientation_estimator.h"

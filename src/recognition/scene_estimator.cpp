@@ -1,5 +1,4 @@
 #include "view_direction_classification/recognition/scene_estimator.h"
-#include "view_direction_classification/common/elapsed_time.h"
 
 #include <algorithm>
 #include <chrono>
@@ -12,6 +11,7 @@
 #include "explained_pieces.h"
 #include "piece_groups.h"
 #include "seen_through.h"
+#include "view_direction_classification/common/elapsed_time.h"
 #include "view_direction_classification/common/error.h"
 #include "view_direction_classification/common/parallel_for.h"
 #include "view_direction_classification/estimation/verification_scene.h"

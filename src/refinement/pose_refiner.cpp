@@ -1,5 +1,4 @@
 #include "view_direction_classification/refinement/pose_refiner.h"
-#include "view_direction_classification/common/elapsed_time.h"
 
 #include <pcl/common/centroid.h>
 #include <pcl/filters/voxel_grid.h>
@@ -25,6 +24,7 @@
 #include "shared_surfaces.h"
 #include "start_screening.h"
 #include "turned_starts.h"
+#include "view_direction_classification/common/elapsed_time.h"
 #include "view_direction_classification/common/error.h"
 #include "view_direction_classification/common/parallel_for.h"
 #include "view_direction_classification/common/quaternion.h"
