@@ -252,7 +252,8 @@ SceneUpdate SceneEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
       outcome.instance = instances_[part_of].id;
       outcome.note = "a part of " + instances_[part_of].name;
     } else if (std::string why = unknowns_.notRetriedBecause(outcome.centroid_world, outcome.sides,
-                                                             world_from_camera.translation());
+                                                             world_from_camera.translation(),
+                                                             candidates[c].points_world);
                !why.empty()) {
       outcome.note = why;
     } else if (identifications >= parameters_.max_identifications) {
@@ -497,7 +498,8 @@ void SceneEstimator::identifyAdjacentGroups(
     if (part_of[m] == kUnchecked) part_of[m] = explainingInstance(candidates[m]);
     return part_of[m] < 0;
   };
-  std::vector<CandidateOutcome> unknown_groups;
+  // Each with its members: their points are the group's.
+  std::vector<std::pair<CandidateOutcome, std::vector<std::size_t>>> unknown_groups;
   for (const std::vector<std::size_t>& group :
        adjacentCandidateGroups(cloud, parts, parameters_.segmentation.cluster_tolerance)) {
     std::vector<std::size_t> members;
@@ -509,7 +511,7 @@ void SceneEstimator::identifyAdjacentGroups(
     const UnionOutcome outcome =
         identifyPieces(cloud, segments, members, candidates, scene, world_from_camera, time,
                        identifications, result, &group_outcome);
-    if (outcome == UnionOutcome::kUnknown) unknown_groups.push_back(group_outcome);
+    if (outcome == UnionOutcome::kUnknown) unknown_groups.emplace_back(group_outcome, members);
     // The explanations checked so far knew nothing of the new instance.
     if (outcome == UnionOutcome::kIdentified) {
       std::fill(part_of.begin(), part_of.end(), kUnchecked);
@@ -521,9 +523,16 @@ void SceneEstimator::identifyAdjacentGroups(
     result->candidates[c].note = "a part of " + instances_[part_of[c]].name;
   }
   // Remembered once every group was tried: a group found unknown must not keep another near it
-  // from being tried on this frame (notRetriedBecause compares centroids and sizes only).
-  for (const CandidateOutcome& group : unknown_groups) {
-    unknowns_.remember(group.centroid_world, group.sides, world_from_camera.translation());
+  // from being tried on this frame (notRetriedBecause knows places, sizes and boxes, not which
+  // pieces a union was made of).
+  for (const auto& [group, members] : unknown_groups) {
+    std::vector<Eigen::Vector3f> points_world;
+    for (std::size_t m : members) {
+      points_world.insert(points_world.end(), candidates[m].points_world.begin(),
+                          candidates[m].points_world.end());
+    }
+    unknowns_.remember(group.centroid_world, group.sides, world_from_camera.translation(),
+                       points_world);
   }
 }
 
@@ -548,7 +557,7 @@ SceneEstimator::UnionOutcome SceneEstimator::identifyPieces(
   }
   if (!unknowns_
            .notRetriedBecause(outcome.centroid_world, outcome.sides,
-                              world_from_camera.translation())
+                              world_from_camera.translation(), union_candidate.front().points_world)
            .empty()) {
     return UnionOutcome::kNotTried;
   }
@@ -599,12 +608,14 @@ int SceneEstimator::identify(const FrameCandidate& candidate, const SceneDepth& 
     outcome->note = identification.reason;
     if (!candidate.allowed.empty()) outcome->note += " (only its class's model was tried)";
     if (!remember_unknown) return -1;
-    unknowns_.remember(outcome->centroid_world, outcome->sides, world_from_camera.translation());
+    unknowns_.remember(outcome->centroid_world, outcome->sides, world_from_camera.translation(),
+                       candidate.points_world);
     return -1;
   }
   if (collidesWithLikelierInstance(identification, outcome)) {
     if (remember_unknown) {
-      unknowns_.remember(outcome->centroid_world, outcome->sides, world_from_camera.translation());
+      unknowns_.remember(outcome->centroid_world, outcome->sides, world_from_camera.translation(),
+                         candidate.points_world);
     }
     return -1;
   }
