@@ -106,7 +106,7 @@ fi
 # right after the refinement's, whose libraries it shares, so that a slower machine, where the
 # budget does not reach the last ones, still runs it (geometry's mesh readers are fuzzed above as
 # well; the evaluation is a measuring tool). On the idle 2-core machine all fifteen fitted until
-# `make test` grew to about 17 minutes (2026-12-07: the budget stopped in the estimator's).
+# `make test` grew to 15-17 minutes (2026-12-07: evaluation, or from the estimator's on, left out).
 sanitizer_tests=(vdc_common_tests vdc_learning_tests vdc_informativeness_tests
   vdc_visualisation_tests vdc_planning_tests vdc_evaluation_report_tests vdc_ros_tests
   vdc_bingham_tests vdc_features_tests vdc_refinement_tests vdc_estimation_tests
