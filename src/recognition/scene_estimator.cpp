@@ -109,6 +109,10 @@ void checkSceneEstimatorParameters(const SceneEstimatorParameters& p) {
     throw Error("scene estimator max_identifications must be >= 0, got " +
                 std::to_string(p.max_identifications));
   }
+  if (p.max_growth_tries < 0) {
+    throw Error("scene estimator max_growth_tries must be >= 0, got " +
+                std::to_string(p.max_growth_tries));
+  }
 }
 
 SceneEstimator::SceneEstimator(ModelLibrary library, SceneEstimatorParameters parameters)
@@ -268,6 +272,7 @@ SceneUpdate SceneEstimator::update(const pcl::PointCloud<pcl::PointXYZ>& cloud,
   stage_start = Clock::now();
   identifyAdjacentGroups(cloud, segments, candidates, scene, world_from_camera, time,
                          clusters_tried, &identifications, &result);
+  growNewInstances(cloud, segments, candidates, scene, world_from_camera, time, &result);
   result.stage_ms.groups = millisecondsSince(stage_start);
   stage_start = Clock::now();
   identifyParts(cloud, segments, candidates, unknown_alone, scene, world_from_camera, time,
@@ -540,8 +545,11 @@ SceneEstimator::UnionOutcome SceneEstimator::identifyPieces(
     const pcl::PointCloud<pcl::PointXYZ>& cloud, const SceneSegments& segments,
     const std::vector<std::size_t>& members, std::vector<FrameCandidate>& candidates,
     const SceneDepth& scene, const Eigen::Isometry3d& world_from_camera, std::optional<double> time,
-    int* identifications, SceneUpdate* result, CandidateOutcome* union_outcome) {
-  if (*identifications >= parameters_.max_identifications) return UnionOutcome::kNotTried;
+    int* identifications, SceneUpdate* result, CandidateOutcome* union_outcome, int must_fit,
+    std::optional<int> budget) {
+  if (*identifications >= budget.value_or(parameters_.max_identifications)) {
+    return UnionOutcome::kNotTried;
+  }
   std::vector<const SceneCandidate*> parts;
   for (std::size_t m : members) parts.push_back(&segments.candidates[m]);
   SceneSegments whole;
@@ -552,7 +560,10 @@ SceneEstimator::UnionOutcome SceneEstimator::identifyPieces(
       frameCandidates(cloud, whole, world_from_camera, &merged);
   CandidateOutcome& outcome = merged.candidates.front();
   // A union no model fits is no identification (the groups of adjacentCandidateGroups mostly).
-  if (library_.fitting(outcome.sides, parameters_.identification.extent_tolerance).empty()) {
+  const std::vector<int> fitting =
+      library_.fitting(outcome.sides, parameters_.identification.extent_tolerance);
+  if (fitting.empty() ||
+      (must_fit >= 0 && std::find(fitting.begin(), fitting.end(), must_fit) == fitting.end())) {
     return UnionOutcome::kNotTried;
   }
   if (!unknowns_

@@ -42,6 +42,7 @@ ParameterTable<SceneRosParameters> makeTable() {
       .add("association_distance", scene(&S::association_distance), numberAbove(0.0))
       .add("max_identifications", scene(&S::max_identifications),
            integerAtLeast(0, "0: no new instances"))
+      .add("max_growth_tries", scene(&S::max_growth_tries), integerAtLeast(0, "0: none"))
       .add("part_search_candidates",
            fieldPath(&P::scene, &S::part_search, &PartSearchParameters::max_candidates),
            integerAtLeast(0, "0: no part search"))

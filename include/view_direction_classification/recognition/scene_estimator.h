@@ -43,6 +43,10 @@ struct SceneEstimatorParameters {
   // view instead of 92 % (67 % to 81 % with 5 models) for the same CPU over three views
   // (doc/evaluation.md), a slower first frame.
   int max_identifications = 20;
+  // Unions tried per frame at most of an instance identified on one candidate alone with a piece
+  // beside it that nothing explains (growNewInstances), after the groups; their own bound, not
+  // max_identifications, which a first view of a crowded table spends before them. 0: none.
+  int max_growth_tries = 4;
   // A known object in part of a candidate left unknown (part_search.h), searched after every
   // other identification of the frame; its own bound (max_candidates), not max_identifications.
   PartSearchParameters part_search;
@@ -236,10 +240,22 @@ class SceneEstimator {
                               std::optional<double> time,
                               const std::set<std::vector<std::size_t>>& tried, int* identifications,
                               SceneUpdate* result);
+  // Segmentation also cuts an object into pieces one of which alone fits wrongly (a helmet's dome
+  // apart from its brim): after the groups, each instance identified on one candidate alone on
+  // this frame is tried with each piece beside it that nothing explains and whose union fits the
+  // instance's model in size (max_growth_tries per frame). The union takes the instance's place
+  // where it is identified at least as surely (identify's same-object rule), or as another
+  // model, which then owns the piece; else nothing changes.
+  void growNewInstances(const pcl::PointCloud<pcl::PointXYZ>& cloud, const SceneSegments& segments,
+                        std::vector<FrameCandidate>& candidates, const SceneDepth& scene,
+                        const Eigen::Isometry3d& world_from_camera, std::optional<double> time,
+                        SceneUpdate* result);
   // Identifies the union of members (candidates of one cluster, or beside each other, most
   // points first) as one object. Identified: it became an instance, whose largest piece reports
   // it and the others are its parts. Not tried: no model fits its size, it is a known unknown, or
-  // max_identifications was reached. union_outcome (optional): the union's outcome.
+  // max_identifications was reached. union_outcome (optional): the union's outcome. must_fit
+  // (optional): a model index the union's size must fit, or it is not tried. budget: the bound
+  // of *identifications (max_identifications when none).
   enum class UnionOutcome { kNotTried, kUnknown, kIdentified };
   UnionOutcome identifyPieces(const pcl::PointCloud<pcl::PointXYZ>& cloud,
                               const SceneSegments& segments,
@@ -247,7 +263,8 @@ class SceneEstimator {
                               std::vector<FrameCandidate>& candidates, const SceneDepth& scene,
                               const Eigen::Isometry3d& world_from_camera,
                               std::optional<double> time, int* identifications, SceneUpdate* result,
-                              CandidateOutcome* union_outcome = nullptr);
+                              CandidateOutcome* union_outcome = nullptr, int must_fit = -1,
+                              std::optional<int> budget = std::nullopt);
   // After every other identification: the candidates that were identified alone and found
   // unknown (unknown_alone), most points first, searched for a known object in part of them
   // (PartSearch); a part identified becomes an instance that the candidate reports.
