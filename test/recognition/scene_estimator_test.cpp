@@ -291,24 +291,50 @@ TEST(SceneEstimatorOverSplit, AMugCutIntoPiecesIsOneInstanceWithItsPiecesAsParts
   EXPECT_NE(instanceAt(estimator, kSecondMug.translation()), nullptr);
 }
 
-// The first mug's points cut into image quadrants, each a cluster of its own (as a depth jump
-// where an object hides part of itself separates its parts), the rest segmented as usual.
-SceneSegments firstMugInQuadrants(const pcl::PointCloud<pcl::PointXYZ>& cloud,
-                                  const Eigen::Isometry3d& world_from_camera) {
-  SceneSegments segments = segmentScene(cloud, {});
+// A rendered frame segmented as usual but for the first mug, whose candidates (within 8 cm of it)
+// are joined into `mug` and left out of `segments`, for a test to cut them its own way.
+struct FirstMugApart {
+  SceneSegments segments;
   SceneCandidate mug;
+};
+
+FirstMugApart firstMugApart(const pcl::PointCloud<pcl::PointXYZ>& cloud,
+                            const Eigen::Isometry3d& world_from_camera) {
+  FirstMugApart apart{segmentScene(cloud, {}), {}};
   std::vector<SceneCandidate> others;
-  for (const SceneCandidate& candidate : segments.candidates) {
+  for (const SceneCandidate& candidate : apart.segments.candidates) {
     const Eigen::Vector3d centroid = world_from_camera * candidate.centroid;
     if ((centroid - kFirstMug.translation()).head<2>().norm() < 0.08) {
-      mug.indices.insert(mug.indices.end(), candidate.indices.begin(), candidate.indices.end());
-      mug.support = candidate.support;
+      apart.mug.indices.insert(apart.mug.indices.end(), candidate.indices.begin(),
+                               candidate.indices.end());
+      apart.mug.support = candidate.support;
     } else {
       others.push_back(candidate);
     }
   }
+  apart.segments.candidates = others;
+  return apart;
+}
+
+// The segments with the mug's pieces back, each a cluster of its own numbered from
+// first_cluster, on the mug's support.
+SceneSegments withMugPieces(const pcl::PointCloud<pcl::PointXYZ>& cloud, FirstMugApart apart,
+                            std::vector<SceneCandidate> pieces, int first_cluster) {
+  for (std::size_t k = 0; k < pieces.size(); ++k) {
+    pieces[k].support = apart.mug.support;
+    pieces[k].cluster = first_cluster + static_cast<int>(k);
+    apart.segments.candidates.push_back(mergedCandidate(cloud, {&pieces[k]}));
+  }
+  return apart.segments;
+}
+
+// The first mug's points cut into image quadrants, each a cluster of its own (as a depth jump
+// where an object hides part of itself separates its parts), the rest segmented as usual.
+SceneSegments firstMugInQuadrants(const pcl::PointCloud<pcl::PointXYZ>& cloud,
+                                  const Eigen::Isometry3d& world_from_camera) {
+  const FirstMugApart apart = firstMugApart(cloud, world_from_camera);
   std::vector<int> rows, columns;
-  for (int index : mug.indices) {
+  for (int index : apart.mug.indices) {
     rows.push_back(index / static_cast<int>(cloud.width));
     columns.push_back(index % static_cast<int>(cloud.width));
   }
@@ -316,18 +342,12 @@ SceneSegments firstMugInQuadrants(const pcl::PointCloud<pcl::PointXYZ>& cloud,
   std::nth_element(columns.begin(), columns.begin() + columns.size() / 2, columns.end());
   const int row = rows[rows.size() / 2], column = columns[columns.size() / 2];
   std::vector<SceneCandidate> quadrants(4);
-  for (int index : mug.indices) {
+  for (int index : apart.mug.indices) {
     const int q = (index / static_cast<int>(cloud.width) < row ? 0 : 2) +
                   (index % static_cast<int>(cloud.width) < column ? 0 : 1);
     quadrants[q].indices.push_back(index);
   }
-  segments.candidates = others;
-  for (int q = 0; q < 4; ++q) {
-    quadrants[q].support = mug.support;
-    quadrants[q].cluster = 100 + q;
-    segments.candidates.push_back(mergedCandidate(cloud, {&quadrants[q]}));
-  }
-  return segments;
+  return withMugPieces(cloud, apart, quadrants, 100);
 }
 
 // Alone no quadrant is explained by the mug better than by "unknown" (checked: without the
@@ -473,27 +493,13 @@ namespace {
 // where a helmet's dome hides the top of its brim) by the plane x = 0 of the mug's frame.
 SceneSegments firstMugCutInTwo(const pcl::PointCloud<pcl::PointXYZ>& cloud,
                                const Eigen::Isometry3d& world_from_camera) {
-  SceneSegments segments = segmentScene(cloud, {});
+  const FirstMugApart apart = firstMugApart(cloud, world_from_camera);
   std::vector<SceneCandidate> halves(2);
-  std::vector<SceneCandidate> others;
-  for (const SceneCandidate& candidate : segments.candidates) {
-    const Eigen::Vector3d centroid = world_from_camera * candidate.centroid;
-    if ((centroid - kFirstMug.translation()).head<2>().norm() >= 0.08) {
-      others.push_back(candidate);
-      continue;
-    }
-    for (int index : candidate.indices) {
-      const Eigen::Vector3d p = world_from_camera * cloud[index].getVector3fMap().cast<double>();
-      halves[(kFirstMug.inverse() * p).x() > 0.0 ? 0 : 1].indices.push_back(index);
-    }
-    halves[0].support = halves[1].support = candidate.support;
+  for (int index : apart.mug.indices) {
+    const Eigen::Vector3d p = world_from_camera * cloud[index].getVector3fMap().cast<double>();
+    halves[(kFirstMug.inverse() * p).x() > 0.0 ? 0 : 1].indices.push_back(index);
   }
-  segments.candidates = others;
-  for (int h = 0; h < 2; ++h) {
-    halves[h].cluster = 200 + h;
-    segments.candidates.push_back(mergedCandidate(cloud, {&halves[h]}));
-  }
-  return segments;
+  return withMugPieces(cloud, apart, halves, 200);
 }
 
 // With a part tolerance too tight for the depth noise no piece is a part of an instance by its
